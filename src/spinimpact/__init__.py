@@ -1,0 +1,36 @@
+"""spinimpact: exact frictional impact of a spinning rigid body on a rough surface.
+
+The theory is V. A. Lubarda (2010), "On the frictional impact of a spinning
+disk against a fixed surface", solved with Keller's method: the normal impulse
+``tau`` replaces time and every velocity is piecewise linear in it.
+
+>>> from spinimpact import Body, solve
+>>> imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), vx=3.0, vy=-4.0, omega=10.0,
+...             mu=0.2, kappa=0.8)
+>>> str(imp.regime)
+'stick-restitution'
+
+Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
+(:class:`Body`, :func:`solve`, :class:`Impact`) <- :mod:`spinimpact.cli`.
+"""
+
+from .model.body import Body
+from .model.impact import History, Impact, Outcome, State, solve
+from .model.particle import ParticleImpact, solve_particle
+from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Body",
+    "ConstantRestitution",
+    "History",
+    "Impact",
+    "Outcome",
+    "ParticleImpact",
+    "RestitutionModel",
+    "State",
+    "TabulatedRestitution",
+    "solve",
+    "solve_particle",
+]

@@ -1,0 +1,246 @@
+"""Works, dissipated energy and the kinetic energy during the impact
+(paper sections 5, 6 and 8).
+
+Every quantity here is an integral over the normal impulse ``tau`` of the
+piecewise-linear velocities of sections 3-4 (Keller's method): the normal
+velocity ``v = v^- + tau/m`` (eq. 3.1) and the slip speed
+``|u| = max(|u^-| - zeta mu tau/m, 0)`` (eqs. 4.2, 4.12), with the force ratio
+``F/N = -mu sign(u^-)`` while slipping and ``0`` once stuck (eq. 6.4).
+Integrals of linear pieces are evaluated exactly by the trapezoid rule over
+the pieces, so no formula below divides by ``mu`` or by ``u^-``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .kinematics import (
+    compression_impulse,
+    incidence_ratio,
+    slip_velocity,
+    stick_impulse,
+    total_impulse,
+)
+
+__all__ = [
+    "kinetic_energy",
+    "work_normal",
+    "work_tangential",
+    "phase_works",
+    "dissipated_energy",
+    "kinetic_energy_at",
+    "min_energy_impulse",
+    "MIN_ENERGY_CASES",
+    "min_energy_case",
+    "work_ratio_tangential",
+    "work_ratio_tangential_bounds",
+    "restitution_work",
+    "restitution_work_zero",
+]
+
+
+def kinetic_energy(vx, vy, omega, mass, inertia):
+    """Kinetic energy of plane motion, ``m (vx^2 + vy^2)/2 + J omega^2/2``."""
+    return 0.5 * mass * (vx * vx + vy * vy) + 0.5 * inertia * omega * omega
+
+
+def work_normal(a, b, mass, vy):
+    """Work of the normal reaction between impulses ``a`` and ``b``.
+
+    ``int_a^b v dtau`` with ``v = v^- + tau/m`` (eqs. 3.1, 5.9, 6.1, 6.2).
+    """
+    return (b - a) * (2.0 * vy + (a + b) / mass) / 2.0
+
+
+def work_tangential(a, b, mass, slip, zeta, mu):
+    """Work of the friction force between impulses ``a <= b``.
+
+    ``int_a^b (F/N) u dtau = -mu int_a^b |u| dtau`` (eqs. 5.8, 6.1, 6.2), with the
+    slip speed falling linearly to zero at ``tau_*`` (eq. 4.5) and staying zero
+    afterwards (eq. 4.12). Always ``<= 0``.
+    """
+    tau_star = stick_impulse(mass, slip, zeta, mu)
+    lo = np.minimum(a, tau_star)
+    hi = np.minimum(b, tau_star)
+    speed0 = np.abs(slip)
+    rate = zeta * mu / mass
+    speed_lo = np.maximum(speed0 - rate * lo, 0.0)
+    speed_hi = np.maximum(speed0 - rate * hi, 0.0)
+    return -mu * (hi - lo) * (speed_lo + speed_hi) / 2.0
+
+
+def phase_works(vx, vy, omega, mass, radius, zeta, mu, kappa):
+    """Works of the normal and friction forces in compression and restitution.
+
+    Returns ``(W_c^n, W_c^t, W_r^n, W_r^t)`` (eqs. 6.1-6.2). In closed form
+    ``W_c^n = tau_0 v^-/2 = -m (v^-)^2/2`` and
+    ``W_r^n = kappa^2 m (v^-)^2/2`` (section 6, so that ``eta = kappa``, eq. 6.5);
+    the friction works reduce to eqs. (6.6)-(6.11) in each regime.
+    """
+    slip = slip_velocity(vx, omega, radius)
+    tau0 = compression_impulse(mass, vy)
+    tau1 = total_impulse(mass, vy, kappa)
+    zero = np.zeros_like(tau0)
+    return (
+        work_normal(zero, tau0, mass, vy),
+        work_tangential(zero, tau0, mass, slip, zeta, mu),
+        work_normal(tau0, tau1, mass, vy),
+        work_tangential(tau0, tau1, mass, slip, zeta, mu),
+    )
+
+
+def dissipated_energy(vx, vy, omega, mass, radius, zeta, mu, kappa):
+    """Energy lost in the impact, ``Delta E = -(W^n + W^t) >= 0`` (eqs. 5.1, 5.10).
+
+    Equals eq. (5.4) ``m (v^-)^2 (1 - kappa^2 + |u^-/v^-|^2/zeta) / 2`` when the
+    contact sticks and eq. (5.6) when it slips throughout. Evaluated as a sum of
+    non-negative terms, so it never comes out negative by cancellation.
+    """
+    slip = slip_velocity(vx, omega, radius)
+    tau1 = total_impulse(mass, vy, kappa)
+    normal = 0.5 * mass * vy * vy * (1.0 - kappa * kappa)
+    return normal - work_tangential(np.zeros_like(tau1), tau1, mass, slip, zeta, mu)
+
+
+def kinetic_energy_at(tau, vx, vy, omega, mass, radius, zeta, mu, kappa):
+    """Kinetic energy ``E(tau)`` during the impact (eq. 8.1 and the two
+    expressions after it).
+
+    ``E(tau) = E^- + int_0^tau (v + u F/N) dtau``; ``tau`` broadcasts with the
+    incidence arrays.
+    """
+    slip = slip_velocity(vx, omega, radius)
+    inertia = mass * radius**2 / (zeta - 1.0)
+    e0 = kinetic_energy(vx, vy, omega, mass, inertia)
+    zero = np.zeros_like(tau)
+    return e0 + work_normal(zero, tau, mass, vy) + work_tangential(zero, tau, mass, slip, zeta, mu)
+
+
+def min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa):
+    """Impulse ``tau_m`` at which the kinetic energy is smallest (eqs. 8.2-8.6).
+
+    ``dE/dtau = v + u F/N`` is continuous and non-decreasing, so ``E`` is convex in
+    ``tau`` and its minimum over ``[0, tau_1]`` is where ``dE/dtau`` vanishes:
+
+    * while slipping, at ``tau_m = m (|v^-| + mu |u^-|)/(1 + zeta mu^2)`` (eq. 8.2),
+      valid when ``|u^-/v^-| >= zeta mu`` (Fig. 5a, 5c);
+    * in the rolling stage at ``tau_m = tau_0`` when ``|u^-/v^-| <= zeta mu``
+      (Fig. 5b, eq. 8.6);
+    * if slip continues and eq. (8.2) exceeds ``tau_1`` (the right inequality of
+      eq. 8.5 fails), ``E`` is still decreasing when the impact ends, so the
+      minimum is the rebound energy, ``tau_m = tau_1``. The paper does not state
+      this case; see ``docs/errata.md``.
+    """
+    slip = slip_velocity(vx, omega, radius)
+    tau0 = compression_impulse(mass, vy)
+    tau1 = total_impulse(mass, vy, kappa)
+    sliding = mass * (np.abs(vy) + mu * np.abs(slip)) / (1.0 + zeta * mu * mu)
+    early_stick = np.abs(slip) < zeta * mu * np.abs(vy)
+    return np.where(early_stick, tau0, np.minimum(sliding, tau1))
+
+
+#: Labels of :func:`min_energy_case`: where the kinetic energy is smallest.
+MIN_ENERGY_CASES = (
+    "sliding (Fig. 5a)",  # tau_0 <= tau_m <= tau_* <= tau_1
+    "rolling (Fig. 5b)",  # tau_* <= tau_m = tau_0
+    "sliding throughout (Fig. 5c)",  # tau_0 <= tau_m < tau_1 < tau_*, eq. (8.5)
+    "at rebound",  # slip throughout and tau_m = tau_1 (beyond eq. 8.5)
+)
+
+
+def min_energy_case(vx, vy, omega, mass, radius, zeta, mu, kappa):
+    """Index into :data:`MIN_ENERGY_CASES` of where ``E(tau)`` is smallest (Fig. 5).
+
+    Case (c) includes ``mu = 0``, where the minimum is at ``tau_0``.
+    """
+    slip = slip_velocity(vx, omega, radius)
+    tau_star = stick_impulse(mass, slip, zeta, mu)
+    tau1 = total_impulse(mass, vy, kappa)
+    tau_m = min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa)
+    case = np.where(tau_star <= compression_impulse(mass, vy), 1, 0)
+    case = np.where(tau_star > tau1, np.where(tau_m < tau1, 2, 3), case)
+    return case.astype(np.int8)
+
+
+def work_ratio_tangential(ratio, zeta, mu, kappa):
+    """Ratio of restitution to compression friction work, ``W_r^t / W_c^t``.
+
+    As a function of ``ratio = |u^-/v^-|`` (eqs. 6.15, 6.16, 6.18); with
+    ``x = ratio/(zeta mu) = tau_*/tau_0``:
+
+    .. math::
+
+        \\frac{W_r^t}{W_c^t} = \\begin{cases}
+            0, & x \\le 1 \\quad (6.15)\\\\
+            \\dfrac{(x-1)^2}{2x-1}, & 1 \\le x \\le 1+\\kappa \\quad (6.16)\\\\
+            \\kappa\\,\\dfrac{2x-2-\\kappa}{2x-1}, & x \\ge 1+\\kappa \\quad (6.18)
+        \\end{cases}
+
+    NaN where ``mu = 0``, or ``ratio = 0``: no friction work is done at all.
+    """
+    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    defined = (mu > 0) & (ratio > 0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = ratio / np.where(defined, zeta * mu, 1.0)
+        mid = (x - 1.0) ** 2 / (2.0 * x - 1.0)
+        high = kappa * (2.0 * x - 2.0 - kappa) / (2.0 * x - 1.0)
+    out = np.where(x <= 1.0, 0.0, np.where(x <= 1.0 + kappa, mid, high))
+    return np.where(defined, out, np.nan)[()]
+
+
+def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
+    """Bounds ``(lower, upper)`` on ``W_r^t/W_c^t`` in the interval holding ``ratio``.
+
+    ``(0, 0)`` for ``ratio <= zeta mu`` (eq. 6.15); ``(0, kappa^2/(1+2 kappa))`` for
+    ``zeta mu <= ratio <= (1+kappa) zeta mu`` (eq. 6.17); and
+    ``(kappa^2/(1+2 kappa), kappa)`` beyond (eq. 6.19). They depend on ``kappa`` only.
+    """
+    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    limit = zeta * mu
+    mid = kappa * kappa / (1.0 + 2.0 * kappa)
+    stick_early = ratio <= limit
+    slip = ratio > (1.0 + kappa) * limit
+    lower = np.where(slip, mid, 0.0)
+    upper = np.where(stick_early, 0.0, np.where(slip, kappa, mid))
+    return lower[()], upper[()]
+
+
+def restitution_work(ratio, zeta, mu, kappa):
+    """Total restitution work ``W_r`` in units of ``tau_0 |v^-|/2 = m (v^-)^2/2``.
+
+    Eqs. (6.7), (6.9), (6.11) as a function of ``ratio = |u^-/v^-|``:
+    ``kappa^2`` for ``ratio <= zeta mu``;
+    ``kappa^2 - zeta mu^2 (ratio/(zeta mu) - 1)^2`` up to ``(1+kappa) zeta mu``;
+    ``kappa^2 + kappa zeta mu^2 (2 + kappa - 2 ratio/(zeta mu))`` beyond.
+    """
+    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    limit = zeta * mu
+    excess = np.maximum(ratio - limit, 0.0)
+    mid = kappa**2 - excess**2 / zeta
+    high = kappa**2 + kappa * (zeta * mu * mu * (2.0 + kappa) - 2.0 * mu * ratio)
+    return np.where(ratio <= (1.0 + kappa) * limit, mid, high)[()]
+
+
+def restitution_work_zero(zeta, mu, kappa):
+    """Incidence ratio ``|u^-/v^-|`` above which the restitution work is negative.
+
+    ``W_r >= 0`` exactly when ``|u^-/v^-|`` is at most
+
+    * ``zeta mu + sqrt(zeta) kappa`` if ``zeta mu^2 >= 1`` (eq. 6.13); this lies in
+      the stick-restitution interval, and ``W_r <= 0`` throughout the slip
+      interval (eq. 6.14, first line);
+    * ``(kappa + (2 + kappa) zeta mu^2) / (2 mu)`` if ``zeta mu^2 < 1``; this lies in
+      the slip interval.
+
+    The second line of the paper's eq. (6.14) claims ``W_r >= 0`` for *all*
+    ``|u^-/v^-| >= (1+kappa) zeta mu`` when ``zeta mu^2 <= 1``; eq. (6.11) shows
+    ``W_r`` falls linearly in ``|u^-/v^-|`` and turns negative at the value above
+    (``docs/errata.md``). ``+inf`` when ``mu = 0``.
+    """
+    zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (zeta, mu, kappa)))
+    strong = zeta * mu * mu >= 1.0
+    with np.errstate(divide="ignore"):
+        weak = np.where(
+            mu > 0, (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * np.where(mu > 0, mu, 1)), np.inf
+        )
+    return np.where(strong, zeta * mu + np.sqrt(zeta) * kappa, weak)[()]

@@ -1,0 +1,81 @@
+"""Qualitative rebound outcomes: conditions on the incidence (paper section 4).
+
+The paper states that the conditions for backward rebound, reversed spin and
+spinning or non-spinning vertical rebound are "straightforward and omitted for
+brevity". They are derived here from eqs. (4.13) and (4.16).
+
+Write ``a = vx^-``, ``b = R omega^-``, ``w = |v^-|``, ``u = a + b``,
+``s = sign(u)`` and ``c = (1 + kappa) mu w``.
+
+*Stick* (``|u| <= (1+kappa) zeta mu w``; eq. 4.13):
+``vx+ = ((zeta-1) a - b)/zeta`` and ``R omega+ = -vx+``. Hence
+
+* backward rebound  <=>  ``a ((zeta-1) a - b) < 0``, i.e. ``b/a > zeta - 1``;
+* reversed spin     <=>  ``b (b - (zeta-1) a) < 0``;
+* vertical rebound  <=>  ``b = (zeta - 1) a``, and it is then *non-spinning*
+  (``omega+ = 0``): the body leaves straight up without spin.
+
+*Slip throughout* (``|u| > (1+kappa) zeta mu w``; eq. 4.16):
+``vx+ = a - s c`` and ``R omega+ = b - s (zeta-1) c``. Hence
+
+* backward rebound  <=>  ``s a > 0`` and ``|a| < c`` (friction overturns ``vx``);
+* reversed spin     <=>  ``s b > 0`` and ``|b| < (zeta-1) c``;
+* vertical rebound  <=>  ``a = s c``; it is *spinning* (``omega+ = (b - s(zeta-1)c)/R``,
+  non-zero since ``|u| > zeta c``).
+
+Together: the body rebounds vertically without spin iff
+``R omega^- = (zeta-1) vx^-`` and ``|vx^-| <= (1+kappa) mu |v^-|``; it rebounds
+vertically with spin iff it slips throughout and ``vx^- = sign(u^-)(1+kappa) mu |v^-|``.
+
+Equalities are decided to within a few rounding errors of the velocity scale
+``|vx| + |R omega| + |vy|``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .kinematics import sticks
+
+__all__ = ["OUTCOMES", "rebound_outcomes"]
+
+#: Names of the flags returned by :func:`rebound_outcomes`, in order.
+OUTCOMES = ("backward", "reversed_spin", "vertical", "spinning", "rolling")
+
+#: Relative tolerance, in units of the velocity scale, for the equalities.
+_RTOL = 16 * np.finfo(np.float64).eps
+
+
+def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
+    """Flags of the qualitative rebound outcome, decided from the incidence alone.
+
+    Returns
+    -------
+    backward : ndarray of bool
+        ``vx^- != 0`` and ``vx^+`` has the opposite sign (the body bounces back).
+    reversed_spin : ndarray of bool
+        ``omega^- != 0`` and ``omega^+`` has the opposite sign.
+    vertical : ndarray of bool
+        ``vx^+ = 0``: the centre leaves along the normal.
+    spinning : ndarray of bool
+        ``omega^+ != 0``.
+    rolling : ndarray of bool
+        ``u^+ = 0``: the body leaves rolling (the contact stuck, eq. 4.6).
+    """
+    a = np.asarray(vx, dtype=float)
+    b = radius * omega
+    w = np.abs(vy)
+    u = a + b
+    s = np.sign(u)
+    c = (1.0 + kappa) * mu * w
+    tol = _RTOL * (np.abs(a) + np.abs(b) + w)
+    stick = sticks(1.0, u, vy, zeta, mu, kappa)
+
+    # Quantities with the sign of vx+ and of omega+, scaled by zeta in the stick case.
+    gx = np.where(stick, (zeta - 1.0) * a - b, zeta * (a - s * c))
+    gw = np.where(stick, b - (zeta - 1.0) * a, zeta * (b - s * (zeta - 1.0) * c))
+    zero_x = np.abs(gx) <= zeta * tol
+    zero_w = np.abs(gw) <= zeta * tol
+    backward = (a != 0) & ~zero_x & (np.sign(gx) == -np.sign(a))
+    reversed_spin = (b != 0) & ~zero_w & (np.sign(gw) == -np.sign(b))
+    return backward, reversed_spin, zero_x, ~zero_w, stick

@@ -1,0 +1,398 @@
+"""``solve()``: the complete impact of a spinning body on a rough surface."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from .. import core
+from .._validation import as_real_array, broadcast, check
+from .body import Body
+from .restitution import RestitutionModel
+
+__all__ = ["State", "Outcome", "History", "Impact", "solve"]
+
+Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give arrays
+
+
+def _out(x: np.ndarray) -> Array:
+    """NumPy scalar for 0-d results, the array otherwise."""
+    return np.asarray(x)[()]
+
+
+class _Indexable:
+    """Mixin: ``obj[i]`` indexes every array field (the impacts) at ``i``."""
+
+    def __getitem__(self, index: Any) -> Any:
+        values = {}
+        for f in fields(self):  # type: ignore[arg-type]
+            v = getattr(self, f.name)
+            if isinstance(v, _Indexable):
+                values[f.name] = v[index]
+            elif isinstance(v, np.ndarray | np.generic):
+                values[f.name] = _out(np.asarray(v)[index])
+            else:
+                values[f.name] = v
+        return type(self)(**values)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Fields as plain Python values (floats, str, bool, nested dicts, lists)."""
+        out: dict[str, Any] = {}
+        for f in fields(self):  # type: ignore[arg-type]
+            v = getattr(self, f.name)
+            if isinstance(v, _Indexable):
+                out[f.name] = v.to_dict()
+            elif isinstance(v, np.ndarray | np.generic):
+                out[f.name] = np.asarray(v).tolist()
+            elif isinstance(v, Body):
+                out[f.name] = {
+                    "name": v.name,
+                    "mass": np.asarray(v.mass).tolist(),
+                    "radius": np.asarray(v.radius).tolist(),
+                    "gyration": np.asarray(v.gyration).tolist(),
+                    "zeta": np.asarray(v.zeta).tolist(),
+                }
+            else:
+                out[f.name] = v
+        return out
+
+
+@dataclass(frozen=True, eq=False)
+class State(_Indexable):
+    """Velocity state of the body: centre velocity ``(vx, vy)`` in m/s and spin
+    ``omega`` in rad/s (counter-clockwise positive)."""
+
+    vx: Array
+    vy: Array
+    omega: Array
+
+
+@dataclass(frozen=True, eq=False)
+class Outcome(_Indexable):
+    """Qualitative rebound outcome, decided from the incidence by the closed-form
+    conditions of :mod:`spinimpact.core.outcomes`.
+
+    Attributes
+    ----------
+    backward : bool
+        The horizontal velocity of the centre reverses (``vx^- != 0``).
+    reversed_spin : bool
+        The spin reverses (``omega^- != 0``).
+    vertical : bool
+        The centre leaves along the normal, ``vx^+ = 0``.
+    spinning : bool
+        The body leaves spinning, ``omega^+ != 0``.
+    rolling : bool
+        The contact point leaves without slip, ``u^+ = 0`` (the contact stuck).
+    """
+
+    backward: Array
+    reversed_spin: Array
+    vertical: Array
+    spinning: Array
+    rolling: Array
+
+
+@dataclass(frozen=True, eq=False)
+class History:
+    """The impact process of one impact, sampled over the normal impulse ``tau``.
+
+    Every array has the length of ``tau``. ``tau0``, ``tau_star`` and ``tau1``
+    mark the end of compression, of slip and of the impact.
+    """
+
+    tau: np.ndarray  #: normal impulse, N s
+    vx: np.ndarray  #: centre velocity along the surface, m/s (eqs. 4.11, 4.12)
+    vy: np.ndarray  #: normal velocity, m/s (eq. 3.3)
+    omega: np.ndarray  #: spin, rad/s (eqs. 4.9, 4.12)
+    slip: np.ndarray  #: contact-point velocity u, m/s (eqs. 4.5, 4.12)
+    force_ratio: np.ndarray  #: F/N (eq. 6.4)
+    tangential_impulse: np.ndarray  #: f(tau), N s (eqs. 7.2, 7.3; Routh's diagram)
+    kinetic_energy: np.ndarray  #: E(tau), J (eq. 8.1)
+    tau0: float
+    tau_star: float
+    tau1: float
+
+
+@dataclass(frozen=True, eq=False)
+class Impact(_Indexable):
+    """Everything :func:`solve` computes about an impact (or an array of impacts).
+
+    Each numeric field has the broadcast shape of the inputs (a NumPy scalar for
+    scalar inputs). Units are SI; impulses in N s, energies and works in J.
+
+    Attributes
+    ----------
+    body : Body
+    mu, kappa : friction and normal restitution used (``kappa`` evaluated from a
+        restitution model if one was given).
+    before, after : State
+        Incidence and rebound velocities (eqs. 4.13, 4.16, 3.4).
+    slip_before, slip_after : contact-point velocity ``u^-``, ``u^+`` (eqs. 4.4, 7.11).
+    incidence_ratio : ``|u^-/v^-|`` (eqs. 4.6, 4.14, 4.15).
+    regime : str
+        ``frictionless`` (``mu = 0``), ``no-slip`` (``u^- = 0``),
+        ``stick-compression`` (``tau_* <= tau_0``), ``stick-restitution``
+        (``tau_0 < tau_* <= tau_1``) or ``slip`` (``tau_* > tau_1``).
+    tau0, tau_star, tau1 : normal impulse at the end of compression (eq. 3.2), of
+        slip (eq. 4.3; ``0`` if ``u^- = 0``, ``inf`` if ``mu = 0``) and of the impact
+        (eq. 3.6).
+    tangential_impulse : ``f_1`` (eq. 5.7).
+    impulse_ratio : ``mu_hat = f_1/tau_1`` (eqs. 7.4, 7.7-7.9).
+    kinetic_energy_before, kinetic_energy_after, dissipated_energy : ``E^-``, ``E^+``
+        and ``Delta E = E^- - E^+ >= 0`` (eqs. 5.1-5.10).
+    work_compression_normal, work_compression_tangential,
+    work_restitution_normal, work_restitution_tangential :
+        ``W_c^n, W_c^t, W_r^n, W_r^t`` (eqs. 6.1-6.11).
+    work_ratio_tangential : ``W_r^t/W_c^t`` (eqs. 6.15-6.19); NaN with no friction work.
+    min_kinetic_energy, tau_min_energy, min_energy_case : ``E_m``, ``tau_m`` and
+        which case of Fig. 5 holds (eqs. 8.1-8.6).
+    newton_restitution, poisson_restitution, energetic_restitution :
+        ``kappa_N = -v^+/v^-`` (eq. 1.1), ``kappa_P = (tau_1 - tau_0)/tau_0`` (eq. 1.2)
+        and ``eta = sqrt(-W_r^n/W_c^n)`` (eq. 1.3), each evaluated from the
+        computed process by its own definition; all equal ``kappa`` (section 3).
+    outcome : Outcome
+        Backward rebound, reversed spin, vertical, spinning, rolling.
+    """
+
+    body: Body
+    mu: Array
+    kappa: Array
+    before: State
+    after: State
+    slip_before: Array
+    slip_after: Array
+    incidence_ratio: Array
+    regime: Array
+    tau0: Array
+    tau_star: Array
+    tau1: Array
+    tangential_impulse: Array
+    impulse_ratio: Array
+    kinetic_energy_before: Array
+    kinetic_energy_after: Array
+    dissipated_energy: Array
+    work_compression_normal: Array
+    work_compression_tangential: Array
+    work_restitution_normal: Array
+    work_restitution_tangential: Array
+    work_ratio_tangential: Array
+    min_kinetic_energy: Array
+    tau_min_energy: Array
+    min_energy_case: Array
+    newton_restitution: Array
+    poisson_restitution: Array
+    energetic_restitution: Array
+    outcome: Outcome
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Broadcast shape of the impacts (``()`` for a single impact)."""
+        return np.shape(self.tau1)
+
+    def __getitem__(self, index: Any) -> Impact:
+        imp = super().__getitem__(index)
+        body = self.body
+        if any(np.ndim(x) for x in (body.mass, body.radius, body.gyration)):
+            b = [np.broadcast_to(x, self.shape)[index] for x in (body.mass, body.radius, body.gyration)]
+            body = Body(mass=b[0], radius=b[1], gyration=b[2], name=body.name)
+        return _replace(imp, body=body)
+
+    def history(self, n: int = 201, *, tau: Any = None) -> History:
+        """The impact process over the normal impulse ``tau`` (Figs. 2-5).
+
+        Parameters
+        ----------
+        n : int
+            Number of evenly spaced points on ``[0, tau_1]``; ``tau_0`` and
+            ``tau_*`` (when inside the impact) are added so the kinks are exact.
+        tau : array_like, optional
+            Explicit impulses in ``[0, tau_1]`` to sample instead.
+
+        Only for a single impact; select one of an array with ``impact[i]``.
+        """
+        if self.shape != ():
+            raise ValueError(
+                f"history() describes one impact, but this Impact has shape {self.shape}; "
+                "select one with impact[i]"
+            )
+        tau0, tau_star, tau1 = float(self.tau0), float(self.tau_star), float(self.tau1)
+        if tau is None:
+            if not isinstance(n, int | np.integer) or n < 2:
+                raise ValueError(f"n must be an integer >= 2, got {n!r}")
+            marks = [t for t in (tau0, tau_star) if 0.0 < t < tau1]
+            grid = np.union1d(np.linspace(0.0, tau1, int(n)), marks)
+        else:
+            grid = as_real_array("tau", tau)
+            check("tau", grid, lambda t: (t >= 0) & (t <= tau1), f"in [0, tau1 = {tau1:g}]")
+        b = self.body
+        args = (self.before.vx, self.before.vy, self.before.omega, b.mass, b.radius, b.zeta)
+        slip0 = float(self.slip_before)
+        vx, vy, omega = core.state_at(grid, *args, self.mu)
+        return History(
+            tau=grid,
+            vx=vx,
+            vy=vy,
+            omega=omega,
+            slip=core.slip_at(grid, b.mass, slip0, b.zeta, self.mu),
+            force_ratio=core.force_ratio_at(grid, b.mass, slip0, b.zeta, self.mu),
+            tangential_impulse=core.friction_impulse_at(grid, b.mass, slip0, b.zeta, self.mu),
+            kinetic_energy=core.kinetic_energy_at(grid, *args, self.mu, self.kappa),
+            tau0=tau0,
+            tau_star=tau_star,
+            tau1=tau1,
+        )
+
+    def __repr__(self) -> str:
+        if self.shape != ():
+            names, counts = np.unique(self.regime, return_counts=True)
+            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+            return f"<Impact of shape {self.shape}: {summary}>"
+        a = self.after
+        return (
+            f"<Impact {self.regime}: after vx={a.vx:.6g} m/s, vy={a.vy:.6g} m/s, "
+            f"omega={a.omega:.6g} rad/s; dissipated {self.dissipated_energy:.6g} J>"
+        )
+
+
+def _replace(obj: Any, **changes: Any) -> Any:
+    values = {f.name: getattr(obj, f.name) for f in fields(obj)}
+    values.update(changes)
+    return type(obj)(**values)
+
+
+def _restitution(kappa: Any, vy: np.ndarray) -> np.ndarray:
+    if isinstance(kappa, RestitutionModel) or callable(kappa):
+        model: Callable[[np.ndarray], Any] = kappa
+        value = model(np.abs(vy))
+        name = f"kappa (from {kappa!r})"
+    else:
+        value, name = kappa, "kappa"
+    arr = as_real_array(name, value)
+    check(name, arr, lambda k: (k >= 0) & (k <= 1), "in [0, 1]")
+    return arr
+
+
+def solve(
+    body: Body,
+    vx: Any,
+    vy: Any,
+    omega: Any,
+    *,
+    mu: Any,
+    kappa: Any,
+) -> Impact:
+    """Solve the frictional impact of a spinning body on a fixed rough surface.
+
+    Keller's method (Lubarda 2010): the normal impulse ``tau`` is the
+    independent variable, friction is Coulomb's with stick once the contact
+    point stops slipping, and Poisson's restitution ends the impact at
+    ``tau_1 = (1 + kappa) tau_0``.
+
+    Parameters
+    ----------
+    body : Body
+        The body; its mass, radius and gyration may themselves be arrays.
+    vx : float or array_like
+        Incidence velocity of the centre along the surface, m/s.
+    vy : float or array_like
+        Incidence normal velocity, m/s, ``< 0`` (approaching the surface).
+    omega : float or array_like
+        Incidence spin, rad/s, counter-clockwise positive. A ball rolling to the
+        right without slip has ``omega = -vx/R``.
+    mu : float or array_like
+        Kinetic Coulomb friction coefficient, ``>= 0``.
+    kappa : float, array_like or callable
+        Coefficient of normal restitution in ``[0, 1]``, or a restitution model:
+        a callable of the impact speed ``|vy|`` returning ``kappa`` (for example
+        :class:`~spinimpact.TabulatedRestitution`).
+
+    Returns
+    -------
+    Impact
+        Every field with the broadcast shape of all the inputs.
+
+    Raises
+    ------
+    ValueError
+        For non-finite input, ``vy >= 0``, ``mu < 0``, ``kappa`` outside
+        ``[0, 1]``, or shapes that do not broadcast; the message names the
+        parameter, the value and the first offending index.
+
+    Examples
+    --------
+    >>> from spinimpact import Body, solve
+    >>> ball = Body.solid_sphere(mass=1.0, radius=0.1)
+    >>> imp = solve(ball, vx=2.0, vy=-3.0, omega=0.0, mu=0.5, kappa=0.8)
+    >>> str(imp.regime), round(float(imp.after.vx / imp.before.vx), 12)   # 5/7 rule
+    ('stick-compression', 0.714285714286)
+    """
+    if not isinstance(body, Body):
+        raise ValueError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    vx_, vy_, om_, mu_ = (as_real_array(n, v) for n, v in zip(("vx", "vy", "omega", "mu"), (vx, vy, omega, mu), strict=True))
+    check("vy", vy_, lambda v: v < 0, "< 0 (the body must approach the surface)")
+    check("mu", mu_, lambda m: m >= 0, ">= 0")
+    kappa_ = _restitution(kappa, vy_)
+    vx_, vy_, om_, mu_, kappa_, m, r, g = broadcast(
+        vx=vx_,
+        vy=vy_,
+        omega=om_,
+        mu=mu_,
+        kappa=kappa_,
+        mass=np.asarray(body.mass),
+        radius=np.asarray(body.radius),
+        gyration=np.asarray(body.gyration),
+    )
+    zeta = 1.0 + (r / g) ** 2
+    inertia = m * g**2
+    inc = (vx_, vy_, om_, m, r, zeta, mu_, kappa_)
+
+    slip = core.slip_velocity(vx_, om_, r)
+    vx1, vy1, om1, f1 = core.rebound(*inc)
+    tau0 = core.compression_impulse(m, vy_)
+    tau1 = core.total_impulse(m, vy_, kappa_)
+    e0 = core.kinetic_energy(vx_, vy_, om_, m, inertia)
+    wcn, wct, wrn, wrt = core.phase_works(*inc)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        wratio = np.where(wct != 0, wrt / np.where(wct != 0, wct, 1.0), np.nan)
+    tau_m = core.min_energy_impulse(*inc)
+    flags = core.rebound_outcomes(vx_, vy_, om_, r, zeta, mu_, kappa_)
+    # Restitution coefficients from the process, each by its own definition:
+    # tau0 is where v(tau) = vy + tau/m vanishes; tau1 is the total impulse m (vy+ - vy-).
+    total = m * (vy1 - vy_)
+    return Impact(
+        body=body,
+        mu=_out(mu_),
+        kappa=_out(kappa_),
+        before=State(_out(vx_), _out(vy_), _out(om_)),
+        after=State(_out(vx1), _out(vy1), _out(om1)),
+        slip_before=_out(slip),
+        slip_after=_out(core.slip_velocity(vx1, om1, r)),
+        incidence_ratio=_out(core.incidence_ratio(slip, vy_)),
+        regime=_out(np.asarray(core.REGIMES)[core.regime_code(m, slip, vy_, zeta, mu_, kappa_)]),
+        tau0=_out(tau0),
+        tau_star=_out(core.stick_impulse(m, slip, zeta, mu_)),
+        tau1=_out(tau1),
+        tangential_impulse=_out(f1),
+        impulse_ratio=_out(core.impulse_ratio(m, slip, vy_, zeta, mu_, kappa_)),
+        kinetic_energy_before=_out(e0),
+        kinetic_energy_after=_out(core.kinetic_energy(vx1, vy1, om1, m, inertia)),
+        dissipated_energy=_out(core.dissipated_energy(*inc)),
+        work_compression_normal=_out(wcn),
+        work_compression_tangential=_out(wct),
+        work_restitution_normal=_out(wrn),
+        work_restitution_tangential=_out(wrt),
+        work_ratio_tangential=_out(wratio),
+        min_kinetic_energy=_out(core.kinetic_energy_at(tau_m, *inc)),
+        tau_min_energy=_out(tau_m),
+        min_energy_case=_out(np.asarray(core.MIN_ENERGY_CASES)[core.min_energy_case(*inc)]),
+        newton_restitution=_out(-vy1 / vy_),
+        poisson_restitution=_out((total - tau0) / tau0),
+        energetic_restitution=_out(np.sqrt(np.maximum(-wrn / wcn, 0.0))),
+        outcome=Outcome(*(_out(x) for x in flags)),
+    )
+
+
