@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -63,14 +63,18 @@ class Body:
     radius: float | np.ndarray
     gyration: float | np.ndarray
     name: str = "custom"
+    #: exact zeta of a preset (``1 + R^2/rho^2`` rounds, e.g. 3.4999999999999996)
+    _zeta: float | np.ndarray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
-        for field in ("mass", "radius", "gyration"):
-            object.__setattr__(self, field, _number(field, getattr(self, field)))
+        for name in ("mass", "radius", "gyration"):
+            object.__setattr__(self, name, _number(name, getattr(self, name)))
+        if self._zeta is None:
+            object.__setattr__(self, "_zeta", 1.0 + (self.radius / self.gyration) ** 2)
 
     @property
     def zeta(self) -> float | np.ndarray:
-        return 1.0 + (self.radius / self.gyration) ** 2
+        return self._zeta  # type: ignore[return-value]
 
     @property
     def inertia(self) -> float | np.ndarray:
@@ -83,7 +87,8 @@ class Body:
         if name not in PRESETS:
             raise ValueError(f"body must be one of {', '.join(PRESETS)}; got {name!r}")
         r = as_real_array("radius", radius)
-        return cls(mass=mass, radius=radius, gyration=np.sqrt(PRESETS[name]) * r, name=name)
+        gyration = np.sqrt(PRESETS[name]) * r
+        return cls(mass=mass, radius=radius, gyration=gyration, name=name, _zeta=1.0 + 1.0 / PRESETS[name])
 
     @classmethod
     def solid_disk(cls, *, mass: float, radius: float) -> Body:

@@ -196,9 +196,10 @@ class Impact(_Indexable):
     def __getitem__(self, index: Any) -> Impact:
         imp = super().__getitem__(index)
         body = self.body
-        if any(np.ndim(x) for x in (body.mass, body.radius, body.gyration)):
-            b = [np.broadcast_to(x, self.shape)[index] for x in (body.mass, body.radius, body.gyration)]
-            body = Body(mass=b[0], radius=b[1], gyration=b[2], name=body.name)
+        parts = (body.mass, body.radius, body.gyration, body.zeta)
+        if any(np.ndim(x) for x in parts):
+            m, r, g, z = (np.broadcast_to(x, self.shape)[index] for x in parts)
+            body = Body(mass=m, radius=r, gyration=g, name=body.name, _zeta=z)
         return _replace(imp, body=body)
 
     def history(self, n: int = 201, *, tau: Any = None) -> History:
@@ -332,11 +333,13 @@ def solve(
     """
     if not isinstance(body, Body):
         raise ValueError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    vx_, vy_, om_, mu_ = (as_real_array(n, v) for n, v in zip(("vx", "vy", "omega", "mu"), (vx, vy, omega, mu), strict=True))
+    vx_, vy_, om_, mu_ = (
+        as_real_array(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
+    )
     check("vy", vy_, lambda v: v < 0, "< 0 (the body must approach the surface)")
     check("mu", mu_, lambda m: m >= 0, ">= 0")
     kappa_ = _restitution(kappa, vy_)
-    vx_, vy_, om_, mu_, kappa_, m, r, g = broadcast(
+    vx_, vy_, om_, mu_, kappa_, m, r, g, zeta = broadcast(
         vx=vx_,
         vy=vy_,
         omega=om_,
@@ -345,8 +348,8 @@ def solve(
         mass=np.asarray(body.mass),
         radius=np.asarray(body.radius),
         gyration=np.asarray(body.gyration),
+        zeta=np.asarray(body.zeta),
     )
-    zeta = 1.0 + (r / g) ** 2
     inertia = m * g**2
     inc = (vx_, vy_, om_, m, r, zeta, mu_, kappa_)
 

@@ -1,0 +1,146 @@
+"""Command line: ``spinimpact solve`` prints the complete impact report.
+
+Errors in the input are reported as one line on stderr with exit status 2 and
+no traceback.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from typing import Any
+
+import click
+
+from .model.body import PRESETS, Body
+from .model.impact import solve
+from .model.particle import solve_particle
+
+__all__ = ["main", "cli"]
+
+#: The documented default case (``spinimpact solve`` with no options): a 1 kg
+#: solid sphere of radius 0.1 m, moving right at 3 m/s and down at 4 m/s with
+#: 10 rad/s of backspin, on a surface with mu = 0.2 and kappa = 0.8. Its contact
+#: sticks during restitution.
+DEFAULTS: dict[str, Any] = {
+    "body": "solid-sphere",
+    "mass": 1.0,
+    "radius": 0.1,
+    "vx": 3.0,
+    "vy": -4.0,
+    "omega": 10.0,
+    "mu": 0.2,
+    "kappa": 0.8,
+}
+
+
+def _jsonable(value: Any) -> Any:
+    """Non-finite floats become ``null`` so the output is strict JSON."""
+    if isinstance(value, dict):
+        return {k: _jsonable(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def _body(body: str | None, mass: float, radius: float, gyration: float | None) -> Body:
+    if gyration is not None:
+        if body is not None:
+            raise click.UsageError("give either --body or --gyration, not both")
+        return Body(mass=mass, radius=radius, gyration=gyration)
+    return Body.preset(body or DEFAULTS["body"], mass=mass, radius=radius)
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(package_name="spinimpact")
+def cli() -> None:
+    """Exact frictional impact of a spinning rigid body on a fixed rough surface.
+
+    Conventions: SI units; x along the surface, y up; omega counter-clockwise
+    positive; the contact-point slip is u = vx + R*omega.
+    """
+
+
+@cli.command("solve")
+@click.option(
+    "--body",
+    type=click.Choice(list(PRESETS)),
+    default=None,
+    help=f"Body preset (default {DEFAULTS['body']}).",
+)
+@click.option("--mass", type=float, default=DEFAULTS["mass"], show_default=True, help="Mass m, kg.")
+@click.option(
+    "--radius", type=float, default=DEFAULTS["radius"], show_default=True, help="Contact radius R, m."
+)
+@click.option(
+    "--gyration",
+    type=float,
+    default=None,
+    help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
+)
+@click.option("--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s.")
+@click.option(
+    "--vy", type=float, default=DEFAULTS["vy"], show_default=True, help="Incidence vy < 0, m/s."
+)
+@click.option(
+    "--omega",
+    type=float,
+    default=DEFAULTS["omega"],
+    show_default=True,
+    help="Incidence spin, rad/s, counter-clockwise positive.",
+)
+@click.option("--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0.")
+@click.option(
+    "--kappa", type=float, default=DEFAULTS["kappa"], show_default=True, help="Restitution in [0, 1]."
+)
+@click.option(
+    "--json",
+    "as_json",
+    is_flag=True,
+    help="Print every Impact field as JSON (infinite or undefined values are null).",
+)
+def solve_command(
+    body: str | None,
+    mass: float,
+    radius: float,
+    gyration: float | None,
+    vx: float,
+    vy: float,
+    omega: float,
+    mu: float,
+    kappa: float,
+    as_json: bool,
+) -> None:
+    """Solve one impact and print the report (regime, rebound, energy, works, mu_hat).
+
+    With no options it solves the documented default case: a 1 kg solid sphere
+    of radius 0.1 m at vx = 3 m/s, vy = -4 m/s with 10 rad/s of backspin, on a
+    surface with mu = 0.2 and kappa = 0.8.
+    """
+    imp = solve(_body(body, mass, radius, gyration), vx, vy, omega, mu=mu, kappa=kappa)
+    if as_json:
+        click.echo(json.dumps(_jsonable(imp.to_dict()), indent=2))
+    else:
+        from .report import print_report  # Rich is imported only when a report is printed
+
+        print_report(imp, solve_particle(vx, vy, mu=mu, kappa=kappa, mass=mass))
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Entry point of the ``spinimpact`` command."""
+    try:
+        cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)
+    except click.exceptions.Abort:
+        click.echo("spinimpact: aborted", err=True)
+        sys.exit(130)
+    except click.ClickException as exc:
+        click.echo(f"spinimpact: error: {exc.format_message()}", err=True)
+        sys.exit(2)
+    except ValueError as exc:
+        click.echo(f"spinimpact: error: {exc}", err=True)
+        sys.exit(2)
+
+
