@@ -180,10 +180,10 @@ def work_ratio_tangential(ratio, zeta, mu, kappa):
     """
     ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
     defined = (mu > 0) & (ratio > 0)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(all="ignore"):  # x may overflow for tiny mu; the branches below cope
         x = ratio / np.where(defined, zeta * mu, 1.0)
         mid = (x - 1.0) ** 2 / (2.0 * x - 1.0)
-        high = kappa * (2.0 * x - 2.0 - kappa) / (2.0 * x - 1.0)
+        high = kappa * (1.0 - (1.0 + kappa) / (2.0 * x - 1.0))  # the printed form of (6.18)
     out = np.where(x <= 1.0, 0.0, np.where(x <= 1.0 + kappa, mid, high))
     return np.where(defined, out, np.nan)[()]
 

@@ -171,8 +171,8 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
     """
     tau1 = total_impulse(mass, vy, kappa)
     f1 = friction_impulse_at(tau1, mass, slip_velocity(vx, omega, radius), zeta, mu)
-    vx_after, vy_after, omega_after = state_at(tau1, vx, vy, omega, mass, radius, zeta, mu)
-    return vx_after, vy_after, omega_after, f1
+    vx_after, _, omega_after = state_at(tau1, vx, vy, omega, mass, radius, zeta, mu)
+    return vx_after, -kappa * vy + 0.0, omega_after, f1
 
 
 def impulse_ratio(mass, slip, vy, zeta, mu, kappa):

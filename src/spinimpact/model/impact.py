@@ -359,8 +359,6 @@ def solve(
     tau1 = core.total_impulse(m, vy_, kappa_)
     e0 = core.kinetic_energy(vx_, vy_, om_, m, inertia)
     wcn, wct, wrn, wrt = core.phase_works(*inc)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        wratio = np.where(wct != 0, wrt / np.where(wct != 0, wct, 1.0), np.nan)
     tau_m = core.min_energy_impulse(*inc)
     flags = core.rebound_outcomes(vx_, vy_, om_, r, zeta, mu_, kappa_)
     # Restitution coefficients from the process, each by its own definition:
@@ -388,7 +386,9 @@ def solve(
         work_compression_tangential=_out(wct),
         work_restitution_normal=_out(wrn),
         work_restitution_tangential=_out(wrt),
-        work_ratio_tangential=_out(wratio),
+        work_ratio_tangential=_out(
+            core.work_ratio_tangential(core.incidence_ratio(slip, vy_), zeta, mu_, kappa_)
+        ),
         min_kinetic_energy=_out(core.kinetic_energy_at(tau_m, *inc)),
         tau_min_energy=_out(tau_m),
         min_energy_case=_out(np.asarray(core.MIN_ENERGY_CASES)[core.min_energy_case(*inc)]),
