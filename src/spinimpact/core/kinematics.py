@@ -78,7 +78,7 @@ def stick_impulse(mass, slip, zeta, mu):
     """
     num = mass * np.abs(slip)
     den = zeta * mu
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # tiny mu: tau_* -> inf
         tau = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.inf)
     return np.where(num == 0, 0.0, tau)
 

@@ -371,7 +371,7 @@ def solve(
         before=State(_out(vx_), _out(vy_), _out(om_)),
         after=State(_out(vx1), _out(vy1), _out(om1)),
         slip_before=_out(slip),
-        slip_after=_out(core.slip_velocity(vx1, om1, r)),
+        slip_after=_out(core.slip_at(tau1, m, slip, zeta, mu_)),
         incidence_ratio=_out(core.incidence_ratio(slip, vy_)),
         regime=_out(np.asarray(core.REGIMES)[core.regime_code(m, slip, vy_, zeta, mu_, kappa_)]),
         tau0=_out(tau0),
