@@ -37,8 +37,26 @@ def test_default_report_shows_every_section():
 
 
 def test_json_equals_python_api():
-    out = run("solve", "--body", "solid-disk", "--mass", "2", "--radius", "0.05",
-              "--vx", "1.5", "--vy", "-2", "--omega", "-80", "--mu", "0.1", "--kappa", "0.6", "--json")
+    out = run(
+        "solve",
+        "--body",
+        "solid-disk",
+        "--mass",
+        "2",
+        "--radius",
+        "0.05",
+        "--vx",
+        "1.5",
+        "--vy",
+        "-2",
+        "--omega",
+        "-80",
+        "--mu",
+        "0.1",
+        "--kappa",
+        "0.6",
+        "--json",
+    )
     assert out.returncode == 0, out.stderr
     data = json.loads(out.stdout)
     imp = solve(Body.solid_disk(mass=2, radius=0.05), 1.5, -2.0, -80.0, mu=0.1, kappa=0.6)

@@ -4,10 +4,11 @@ over 12,000 random impacts spread evenly over the five regimes."""
 
 import numpy as np
 import pytest
-from cases import REGIME_NAMES, random_cases
-from reference import integrate, integrate_ivp
 
 from spinimpact import Body, solve
+
+from cases import REGIME_NAMES, random_cases
+from reference import integrate, integrate_ivp
 
 N = 12_000
 
@@ -17,7 +18,9 @@ def both():
     c = random_cases(N, seed=20261122)
     body = Body(mass=c["mass"], radius=c["radius"], gyration=c["gyration"])
     imp = solve(body, c["vx"], c["vy"], c["omega"], mu=c["mu"], kappa=c["kappa"])
-    ref = integrate(c["vx"], c["vy"], c["omega"], c["mass"], c["radius"], c["gyration"], c["mu"], c["kappa"])
+    ref = integrate(
+        c["vx"], c["vy"], c["omega"], c["mass"], c["radius"], c["gyration"], c["mu"], c["kappa"]
+    )
     return c, imp, ref
 
 
@@ -79,7 +82,10 @@ def test_dissipated_energy_and_works(both):
     ):
         assert np.all(np.abs(mine - theirs) <= RTOL * e)
     # and the energy balance E- + W = E+ closes on the computed velocities (eq. 5.11)
-    assert np.all(np.abs(imp.kinetic_energy_before - imp.kinetic_energy_after - imp.dissipated_energy) <= RTOL * e)
+    assert np.all(
+        np.abs(imp.kinetic_energy_before - imp.kinetic_energy_after - imp.dissipated_energy)
+        <= RTOL * e
+    )
 
 
 def test_impulse_ratio(both):
@@ -103,7 +109,9 @@ def test_restitution_coefficients_from_the_process(both):
     c, imp, ref = both
     k = c["kappa"]
     np.testing.assert_allclose(imp.newton_restitution, -ref.vy / c["vy"], rtol=0, atol=1e-12)
-    np.testing.assert_allclose(imp.poisson_restitution, (ref.tau1 - ref.tau0) / ref.tau0, atol=1e-12)
+    np.testing.assert_allclose(
+        imp.poisson_restitution, (ref.tau1 - ref.tau0) / ref.tau0, atol=1e-12
+    )
     np.testing.assert_allclose(imp.energetic_restitution, np.sqrt(-ref.wrn / ref.wcn), atol=1e-7)
     # ... and all three equal kappa (section 3; eq. 6.5)
     for x in (imp.newton_restitution, imp.poisson_restitution, imp.energetic_restitution):

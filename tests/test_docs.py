@@ -20,7 +20,9 @@ def test_readme_examples():
 
 
 MODULES = sorted(
-    m.name for m in pkgutil.walk_packages(spinimpact.__path__, "spinimpact.") if m.name != "spinimpact.__main__"
+    m.name
+    for m in pkgutil.walk_packages(spinimpact.__path__, "spinimpact.")
+    if m.name != "spinimpact.__main__"
 )
 
 

@@ -53,9 +53,7 @@ def test_eq_6_14_second_line_restitution_work_turns_negative():
     assert w_r < 0  # the printed claim W_r >= 0 fails
     # the corrected threshold (kappa + (2 + kappa) zeta mu^2) / (2 mu) = 2.875
     assert core.restitution_work_zero(zeta, mu, kappa) == pytest.approx(2.875, rel=1e-14)
-    signs = [
-        np.sign(float(core.restitution_work(r, zeta, mu, kappa))) for r in (2.8, 2.875, 2.95)
-    ]
+    signs = [np.sign(float(core.restitution_work(r, zeta, mu, kappa))) for r in (2.8, 2.875, 2.95)]
     assert signs == [1.0, 0.0, -1.0]
 
 

@@ -4,9 +4,10 @@ signs of the computed rebound velocities."""
 
 import numpy as np
 import pytest
-from cases import random_cases
 
 from spinimpact import Body, solve
+
+from cases import random_cases
 
 
 @pytest.fixture(scope="module")

@@ -94,7 +94,9 @@ def test_broadcasting_gives_the_broadcast_shape(n, k):
     ):
         assert np.shape(value) == (n, k)
     # each element equals the scalar solution
-    one = solve(Body.ring(mass=1.0, radius=0.1), vx[n - 1, 0], -2.0, omega[k - 1], mu=0.3, kappa=0.5)
+    one = solve(
+        Body.ring(mass=1.0, radius=0.1), vx[n - 1, 0], -2.0, omega[k - 1], mu=0.3, kappa=0.5
+    )
     assert imp[n - 1, k - 1].after.vx == one.after.vx
     assert imp[n - 1, k - 1].regime == one.regime
 

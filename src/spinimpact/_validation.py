@@ -40,7 +40,9 @@ def as_real_array(name: str, value: object) -> np.ndarray:
     try:
         arr = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number or array of numbers, got {value!r}") from None
+        raise ValueError(
+            f"{name} must be a real number or array of numbers, got {value!r}"
+        ) from None
     bad = ~np.isfinite(arr)
     if bad.any():
         raise ValueError(f"{name} must be finite, got {_value(arr, bad)}{_where(bad)}")

@@ -73,7 +73,11 @@ def cli() -> None:
 )
 @click.option("--mass", type=float, default=DEFAULTS["mass"], show_default=True, help="Mass m, kg.")
 @click.option(
-    "--radius", type=float, default=DEFAULTS["radius"], show_default=True, help="Contact radius R, m."
+    "--radius",
+    type=float,
+    default=DEFAULTS["radius"],
+    show_default=True,
+    help="Contact radius R, m.",
 )
 @click.option(
     "--gyration",
@@ -81,7 +85,9 @@ def cli() -> None:
     default=None,
     help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
 )
-@click.option("--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s.")
+@click.option(
+    "--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s."
+)
 @click.option(
     "--vy", type=float, default=DEFAULTS["vy"], show_default=True, help="Incidence vy < 0, m/s."
 )
@@ -94,7 +100,11 @@ def cli() -> None:
 )
 @click.option("--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0.")
 @click.option(
-    "--kappa", type=float, default=DEFAULTS["kappa"], show_default=True, help="Restitution in [0, 1]."
+    "--kappa",
+    type=float,
+    default=DEFAULTS["kappa"],
+    show_default=True,
+    help="Restitution in [0, 1].",
 )
 @click.option(
     "--json",
@@ -142,5 +152,3 @@ def main(argv: list[str] | None = None) -> None:
     except ValueError as exc:
         click.echo(f"spinimpact: error: {exc}", err=True)
         sys.exit(2)
-
-

@@ -31,7 +31,9 @@ def _table(title: str, *columns: str) -> Table:
     return table
 
 
-def print_report(imp: Impact, particle: ParticleImpact | None = None, console: Console | None = None) -> None:
+def print_report(
+    imp: Impact, particle: ParticleImpact | None = None, console: Console | None = None
+) -> None:
     """Print the regime, rebound, energy budget, works by phase, coefficients and
     outcome of a single impact; with ``particle``, the Whittaker particle beside it."""
     console = console or Console(highlight=False)
@@ -39,7 +41,8 @@ def print_report(imp: Impact, particle: ParticleImpact | None = None, console: C
     zmu = float(b.zeta * imp.mu)
     console.print(
         f"[bold]Impact of a {b.name} body[/bold]  m = {_g(b.mass, 'kg')}, R = {_g(b.radius, 'm')}, "
-        f"rho = {_g(b.gyration, 'm')}, zeta = {_g(b.zeta)};  mu = {_g(imp.mu)}, kappa = {_g(imp.kappa)}"
+        f"rho = {_g(b.gyration, 'm')}, zeta = {_g(b.zeta)};  "
+        f"mu = {_g(imp.mu)}, kappa = {_g(imp.kappa)}"
     )
     console.print(
         f"Regime: [bold]{imp.regime}[/bold]   |u-/v-| = {_g(imp.incidence_ratio)}  "
@@ -70,7 +73,9 @@ def print_report(imp: Impact, particle: ParticleImpact | None = None, console: C
     ):
         t.add_row(label, _g(value), f"{float(value) / e0:.2%}" if e0 else "")
     console.print(t)
-    console.print(f"Minimum energy at tau_m = {_g(imp.tau_min_energy, 'N s')}: {imp.min_energy_case}")
+    console.print(
+        f"Minimum energy at tau_m = {_g(imp.tau_min_energy, 'N s')}: {imp.min_energy_case}"
+    )
     console.print()
 
     t = _table("Works of the contact forces (J)", "phase", "normal", "friction", "total")

@@ -16,7 +16,6 @@ import numpy as np
 
 from .kinematics import (
     compression_impulse,
-    incidence_ratio,
     slip_velocity,
     stick_impulse,
     total_impulse,
@@ -241,6 +240,8 @@ def restitution_work_zero(zeta, mu, kappa):
     strong = zeta * mu * mu >= 1.0
     with np.errstate(divide="ignore"):
         weak = np.where(
-            mu > 0, (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * np.where(mu > 0, mu, 1)), np.inf
+            mu > 0,
+            (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * np.where(mu > 0, mu, 1)),
+            np.inf,
         )
     return np.where(strong, zeta * mu + np.sqrt(zeta) * kappa, weak)[()]

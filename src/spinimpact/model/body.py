@@ -88,7 +88,9 @@ class Body:
             raise ValueError(f"body must be one of {', '.join(PRESETS)}; got {name!r}")
         r = as_real_array("radius", radius)
         gyration = np.sqrt(PRESETS[name]) * r
-        return cls(mass=mass, radius=radius, gyration=gyration, name=name, _zeta=1.0 + 1.0 / PRESETS[name])
+        return cls(
+            mass=mass, radius=radius, gyration=gyration, name=name, _zeta=1.0 + 1.0 / PRESETS[name]
+        )
 
     @classmethod
     def solid_disk(cls, *, mass: float, radius: float) -> Body:

@@ -397,5 +397,3 @@ def solve(
         energetic_restitution=_out(np.sqrt(np.maximum(-wrn / wcn, 0.0))),
         outcome=Outcome(*(_out(x) for x in flags)),
     )
-
-

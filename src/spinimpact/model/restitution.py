@@ -139,4 +139,5 @@ class TabulatedRestitution(RestitutionModel):
         return np.interp(v, self.speeds, self.kappas)
 
     def __repr__(self) -> str:
-        return f"TabulatedRestitution({self.speeds.size} points, {self.speeds[0]:g}-{self.speeds[-1]:g} m/s)"
+        lo, hi = self.speeds[0], self.speeds[-1]
+        return f"TabulatedRestitution({self.speeds.size} points, {lo:g}-{hi:g} m/s)"
