@@ -11,7 +11,14 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["as_real_array", "broadcast", "check"]
+__all__ = ["as_real_array", "broadcast", "check", "LARGEST", "SMALLEST"]
+
+#: Largest magnitude accepted for any input. Keeping every input within
+#: [1e-50, 1e50] keeps every product the formulas form (m v^2, zeta mu^2, ...)
+#: far from overflow and underflow, so no result is silently inf, NaN or 0.
+LARGEST = 1e50
+#: Smallest magnitude accepted for strictly positive inputs (mass, radius, |vy|, ...).
+SMALLEST = 1e-50
 
 
 def _where(mask: np.ndarray) -> str:
@@ -23,8 +30,7 @@ def _where(mask: np.ndarray) -> str:
 
 
 def _value(arr: np.ndarray, mask: np.ndarray) -> str:
-    value = arr[mask].flat[0] if arr.ndim else arr[()]
-    return repr(float(value)) if np.issubdtype(arr.dtype, np.number) else repr(value)
+    return repr(float(arr[mask].flat[0] if arr.ndim else arr[()]))
 
 
 def as_real_array(name: str, value: object) -> np.ndarray:

@@ -16,8 +16,11 @@ import numpy as np
 
 from .kinematics import (
     compression_impulse,
+    regime_code,
     slip_velocity,
+    state_at,
     stick_impulse,
+    sticks_in_compression,
     total_impulse,
 )
 
@@ -101,18 +104,15 @@ def dissipated_energy(vx, vy, omega, mass, radius, zeta, mu, kappa):
     return normal - work_tangential(np.zeros_like(tau1), tau1, mass, slip, zeta, mu)
 
 
-def kinetic_energy_at(tau, vx, vy, omega, mass, radius, zeta, mu, kappa):
-    """Kinetic energy ``E(tau)`` during the impact (eq. 8.1 and the two
-    expressions after it).
+def kinetic_energy_at(tau, vx, vy, omega, mass, radius, zeta, mu, inertia):
+    """Kinetic energy ``E(tau)`` during the impact (eq. 8.1 and the two forms after it).
 
-    ``E(tau) = E^- + int_0^tau (v + u F/N) dtau``; ``tau`` broadcasts with the
-    incidence arrays.
+    By the work principle ``E(tau) = E^- + int_0^tau (v + u F/N) dtau`` equals the
+    kinetic energy of the velocities at ``tau`` (:func:`state_at`), which is how it
+    is evaluated here: non-negative by construction. ``tau`` broadcasts with the
+    incidence arrays; ``inertia`` is ``J = m rho^2``.
     """
-    slip = slip_velocity(vx, omega, radius)
-    inertia = mass * radius**2 / (zeta - 1.0)
-    e0 = kinetic_energy(vx, vy, omega, mass, inertia)
-    zero = np.zeros_like(tau)
-    return e0 + work_normal(zero, tau, mass, vy) + work_tangential(zero, tau, mass, slip, zeta, mu)
+    return kinetic_energy(*state_at(tau, vx, vy, omega, mass, radius, zeta, mu), mass, inertia)
 
 
 def min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa):
@@ -134,30 +134,31 @@ def min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa):
     tau0 = compression_impulse(mass, vy)
     tau1 = total_impulse(mass, vy, kappa)
     sliding = mass * (np.abs(vy) + mu * np.abs(slip)) / (1.0 + zeta * mu * mu)
-    early_stick = np.abs(slip) < zeta * mu * np.abs(vy)
-    return np.where(early_stick, tau0, np.minimum(sliding, tau1))
+    return np.where(sticks_in_compression(slip, vy, zeta, mu), tau0, np.minimum(sliding, tau1))
 
 
 #: Labels of :func:`min_energy_case`: where the kinetic energy is smallest.
 MIN_ENERGY_CASES = (
-    "sliding (Fig. 5a)",  # tau_0 <= tau_m <= tau_* <= tau_1
+    "sliding, then stick (Fig. 5a)",  # tau_0 <= tau_m <= tau_* <= tau_1
     "rolling (Fig. 5b)",  # tau_* <= tau_m = tau_0
     "sliding throughout (Fig. 5c)",  # tau_0 <= tau_m < tau_1 < tau_*, eq. (8.5)
     "at rebound",  # slip throughout and tau_m = tau_1 (beyond eq. 8.5)
+    "frictionless",  # mu = 0: tau_m = tau_0
 )
 
 
 def min_energy_case(vx, vy, omega, mass, radius, zeta, mu, kappa):
     """Index into :data:`MIN_ENERGY_CASES` of where ``E(tau)`` is smallest (Fig. 5).
 
-    Case (c) includes ``mu = 0``, where the minimum is at ``tau_0``.
+    Decided with the regime (:func:`regime_code`): stick in compression or no slip
+    gives (b); stick in restitution (a); slip throughout (c) or, past eq. (8.5),
+    the rebound itself; ``mu = 0`` is labelled ``frictionless`` (``tau_m = tau_0``).
     """
     slip = slip_velocity(vx, omega, radius)
-    tau_star = stick_impulse(mass, slip, zeta, mu)
-    tau1 = total_impulse(mass, vy, kappa)
+    code = regime_code(slip, vy, zeta, mu, kappa)
     tau_m = min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa)
-    case = np.where(tau_star <= compression_impulse(mass, vy), 1, 0)
-    case = np.where(tau_star > tau1, np.where(tau_m < tau1, 2, 3), case)
+    before_end = tau_m < total_impulse(mass, vy, kappa)
+    case = np.select([code == 0, code <= 2, code == 3, before_end], [4, 1, 0, 2], 3)
     return case.astype(np.int8)
 
 
@@ -201,7 +202,8 @@ def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
     slip = ratio > (1.0 + kappa) * limit
     lower = np.where(slip, mid, 0.0)
     upper = np.where(stick_early, 0.0, np.where(slip, kappa, mid))
-    return lower[()], upper[()]
+    undefined = (mu == 0) | (ratio == 0)  # no friction work: the ratio is NaN
+    return np.where(undefined, np.nan, lower)[()], np.where(undefined, np.nan, upper)[()]
 
 
 def restitution_work(ratio, zeta, mu, kappa):
@@ -234,7 +236,9 @@ def restitution_work_zero(zeta, mu, kappa):
     The second line of the paper's eq. (6.14) claims ``W_r >= 0`` for *all*
     ``|u^-/v^-| >= (1+kappa) zeta mu`` when ``zeta mu^2 <= 1``; eq. (6.11) shows
     ``W_r`` falls linearly in ``|u^-/v^-|`` and turns negative at the value above
-    (``docs/errata.md``). ``+inf`` when ``mu = 0``.
+    (``docs/errata.md``). ``+inf`` when ``mu = 0`` or ``kappa = 0`` (then ``W_r``
+    is never negative: without friction it is ``kappa^2 m (v^-)^2/2``, and without
+    restitution there is no restitution phase).
     """
     zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (zeta, mu, kappa)))
     strong = zeta * mu * mu >= 1.0
@@ -244,4 +248,5 @@ def restitution_work_zero(zeta, mu, kappa):
             (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * np.where(mu > 0, mu, 1)),
             np.inf,
         )
-    return np.where(strong, zeta * mu + np.sqrt(zeta) * kappa, weak)[()]
+    value = np.where(strong, zeta * mu + np.sqrt(zeta) * kappa, weak)
+    return np.where(kappa == 0, np.inf, value)[()]

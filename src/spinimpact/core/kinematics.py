@@ -28,7 +28,10 @@ __all__ = [
     "total_impulse",
     "stick_impulse",
     "sticks",
+    "sticks_in_compression",
     "regime_code",
+    "regime_thresholds",
+    "rebound_slip",
     "friction_impulse_at",
     "force_ratio_at",
     "slip_at",
@@ -36,6 +39,7 @@ __all__ = [
     "tangential_impulse",
     "rebound",
     "impulse_ratio",
+    "restitution_coefficients",
     "velocity_ratios",
 ]
 
@@ -83,15 +87,26 @@ def stick_impulse(mass, slip, zeta, mu):
     return np.where(num == 0, 0.0, tau)
 
 
-def sticks(mass, slip, vy, zeta, mu, kappa):
+def sticks(slip, vy, zeta, mu, kappa):
     """True where the slip stops before the impact ends, ``tau_* <= tau_1`` (eq. 4.6).
 
-    Equivalent to ``|u^-/v^-| <= (1 + kappa) zeta mu``.
+    Evaluated as ``|u^-| <= (1 + kappa) zeta mu |v^-|``, free of the mass and of
+    divisions. This one comparison decides stick versus slip for every result
+    (regime, rebound, ``u^+``, outcome flags), so they never disagree at the
+    boundary, where the two closed forms coincide anyway.
     """
-    return stick_impulse(mass, slip, zeta, mu) <= total_impulse(mass, vy, kappa)
+    return np.abs(slip) <= (1.0 + kappa) * zeta * mu * np.abs(vy)
 
 
-def regime_code(mass, slip, vy, zeta, mu, kappa):
+def sticks_in_compression(slip, vy, zeta, mu):
+    """True where the slip stops by the end of compression, ``tau_* <= tau_0`` (eq. 4.14).
+
+    Evaluated as ``|u^-| <= zeta mu |v^-|``.
+    """
+    return np.abs(slip) <= zeta * mu * np.abs(vy)
+
+
+def regime_code(slip, vy, zeta, mu, kappa):
     """Integer code of the impact regime; ``REGIMES[code]`` names it.
 
     ===  =====================  ==============================================
@@ -102,12 +117,19 @@ def regime_code(mass, slip, vy, zeta, mu, kappa):
     4    ``slip``               ``tau_* > tau_1``, i.e. ``|u^-/v^-| > (1+kappa) zeta mu`` (eq. 4.15)
     ===  =====================  ==============================================
     """
-    tau_star = stick_impulse(mass, slip, zeta, mu)
-    tau0 = compression_impulse(mass, vy)
-    tau1 = total_impulse(mass, vy, kappa)
-    code = np.where(tau_star <= tau0, 2, np.where(tau_star <= tau1, 3, 4))
+    code = np.where(
+        sticks_in_compression(slip, vy, zeta, mu),
+        2,
+        np.where(sticks(slip, vy, zeta, mu, kappa), 3, 4),
+    )
     code = np.where(slip == 0, 1, code)
     return np.where(mu == 0, 0, code).astype(np.int8)
+
+
+def regime_thresholds(zeta, mu, kappa):
+    """Incidence ratios ``|u^-/v^-|`` that bound the regimes: ``zeta mu`` (eq. 4.14)
+    and ``(1 + kappa) zeta mu`` (eqs. 4.6, 4.15)."""
+    return zeta * mu, (1.0 + kappa) * zeta * mu
 
 
 def friction_impulse_at(tau, mass, slip, zeta, mu):
@@ -152,8 +174,24 @@ def state_at(tau, vx, vy, omega, mass, radius, zeta, mu):
 
 
 def tangential_impulse(mass, slip, vy, zeta, mu, kappa):
-    """Total friction impulse ``f_1 = -mu sign(u^-) min(tau_*, tau_1)`` (eqs. 5.7, 7.6)."""
-    return friction_impulse_at(total_impulse(mass, vy, kappa), mass, slip, zeta, mu)
+    """Total friction impulse ``f_1 = -mu sign(u^-) min(tau_*, tau_1)`` (eqs. 5.7, 7.6).
+
+    When the contact sticks, ``mu tau_*`` is evaluated exactly as ``m |u^-|/zeta``
+    (eq. 4.3), independent of ``mu``.
+    """
+    stick = sticks(slip, vy, zeta, mu, kappa)
+    slide = -mu * np.sign(slip) * total_impulse(mass, vy, kappa)
+    return np.where(stick, -mass * slip / zeta, slide) + 0.0
+
+
+def rebound_slip(slip, vy, zeta, mu, kappa):
+    """Rebound slip velocity of the contact point ``u^+`` (eq. 7.11).
+
+    ``0`` when the contact sticks; ``u^- - sign(u^-) (1+kappa) zeta mu |v^-|``,
+    i.e. ``u^- (1 - (1+kappa) zeta mu/|u^-/v^-|)``, when it slips throughout.
+    """
+    stick = sticks(slip, vy, zeta, mu, kappa)
+    return np.where(stick, 0.0, slip - np.sign(slip) * (1.0 + kappa) * zeta * mu * np.abs(vy)) + 0.0
 
 
 def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
@@ -169,13 +207,27 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
     -------
     vx_after, vy_after, omega_after, f1 : ndarray
     """
-    tau1 = total_impulse(mass, vy, kappa)
-    f1 = friction_impulse_at(tau1, mass, slip_velocity(vx, omega, radius), zeta, mu)
-    vx_after, _, omega_after = state_at(tau1, vx, vy, omega, mass, radius, zeta, mu)
+    f1 = tangential_impulse(mass, slip_velocity(vx, omega, radius), vy, zeta, mu, kappa)
+    vx_after = vx + f1 / mass
+    omega_after = omega + (zeta - 1.0) * f1 / (mass * radius)
     return vx_after, -kappa * vy + 0.0, omega_after, f1
 
 
-def impulse_ratio(mass, slip, vy, zeta, mu, kappa):
+def restitution_coefficients(mass, vy, vy_after, work_compression_normal, work_restitution_normal):
+    """Newton's, Poisson's and Stronge's restitution, each from its own definition.
+
+    ``kappa_N = -v^+/v^-`` (eq. 1.1); ``kappa_P = (tau_1 - tau_0)/tau_0`` (eq. 1.2)
+    with ``tau_0 = -m v^-`` where ``v(tau)`` vanishes (eq. 3.2) and the total
+    impulse ``tau_1 = m (v^+ - v^-)`` (eq. 2.2); ``eta = sqrt(-W_r^n/W_c^n)``
+    (eq. 1.3). For the disk all three equal ``kappa`` (eqs. 3.4, 3.5, 6.5).
+    """
+    tau0 = compression_impulse(mass, vy)
+    tau1 = mass * (vy_after - vy)
+    eta2 = -work_restitution_normal / work_compression_normal
+    return -vy_after / vy, (tau1 - tau0) / tau0, np.sqrt(np.maximum(eta2, 0.0))
+
+
+def impulse_ratio(slip, vy, zeta, mu, kappa):
     """Tangential impact coefficient ``mu_hat = f_1 / tau_1`` (eqs. 7.4, 7.7-7.9).
 
     Notes
@@ -194,7 +246,7 @@ def impulse_ratio(mass, slip, vy, zeta, mu, kappa):
     ``-mu |u^-| / (u^- - u^+)``, swaps the two cases and is wrong; see
     ``docs/errata.md``.
     """
-    stick = sticks(mass, slip, vy, zeta, mu, kappa)
+    stick = sticks(slip, vy, zeta, mu, kappa)
     return np.where(stick, slip / ((1.0 + kappa) * zeta * vy), -mu * np.sign(slip)) + 0.0
 
 
@@ -216,7 +268,7 @@ def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
     NaN where the incidence component is zero (the ratio is undefined).
     """
     slip = slip_velocity(vx, omega, radius)
-    stick = sticks(1.0, slip, vy, zeta, mu, kappa)
+    stick = sticks(slip, vy, zeta, mu, kappa)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = incidence_ratio(slip, vy)
         factor = np.where(stick, 1.0 / zeta, (1.0 + kappa) * mu / ratio)

@@ -69,7 +69,7 @@ def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
     s = np.sign(u)
     c = (1.0 + kappa) * mu * w
     tol = _RTOL * (np.abs(a) + np.abs(b) + w)
-    stick = sticks(1.0, u, vy, zeta, mu, kappa)
+    stick = sticks(u, vy, zeta, mu, kappa)
 
     # Quantities with the sign of vx+ and of omega+, scaled by zeta in the stick case.
     gx = np.where(stick, (zeta - 1.0) * a - b, zeta * (a - s * c))

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import as_real_array, check
+from .._validation import SMALLEST, as_real_array, check
 
 __all__ = ["Body", "PRESETS"]
 
@@ -22,6 +22,7 @@ PRESETS: dict[str, float] = {
 def _number(name: str, value: object) -> float | np.ndarray:
     arr = as_real_array(name, value)
     check(name, arr, lambda a: a > 0, "> 0")
+    check(name, arr, lambda a: a >= SMALLEST, f">= {SMALLEST:g}")
     return float(arr) if arr.ndim == 0 else arr
 
 
@@ -63,14 +64,20 @@ class Body:
     radius: float | np.ndarray
     gyration: float | np.ndarray
     name: str = "custom"
-    #: exact zeta of a preset (``1 + R^2/rho^2`` rounds, e.g. 3.4999999999999996)
-    _zeta: float | np.ndarray | None = field(default=None, repr=False)
+    #: zeta, computed once; the presets replace it by its exact value (3, 2, 7/2,
+    #: 5/2), which ``1 + R^2/rho^2`` only rounds to (e.g. 3.4999999999999996)
+    _zeta: float | np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         for name in ("mass", "radius", "gyration"):
             object.__setattr__(self, name, _number(name, getattr(self, name)))
-        if self._zeta is None:
-            object.__setattr__(self, "_zeta", 1.0 + (self.radius / self.gyration) ** 2)
+        zeta = 1.0 + (self.radius / self.gyration) ** 2
+        if np.any(zeta == 1.0):
+            raise ValueError(
+                "radius/gyration is too small: zeta = 1 + (radius/gyration)**2 rounds to 1 "
+                f"(radius {self.radius!r}, gyration {self.gyration!r})"
+            )
+        object.__setattr__(self, "_zeta", zeta)
 
     @property
     def zeta(self) -> float | np.ndarray:
@@ -87,10 +94,9 @@ class Body:
         if name not in PRESETS:
             raise ValueError(f"body must be one of {', '.join(PRESETS)}; got {name!r}")
         r = as_real_array("radius", radius)
-        gyration = np.sqrt(PRESETS[name]) * r
-        return cls(
-            mass=mass, radius=radius, gyration=gyration, name=name, _zeta=1.0 + 1.0 / PRESETS[name]
-        )
+        body = cls(mass=mass, radius=radius, gyration=np.sqrt(PRESETS[name]) * r, name=name)
+        object.__setattr__(body, "_zeta", 1.0 + 1.0 / PRESETS[name])
+        return body
 
     @classmethod
     def solid_disk(cls, *, mass: float, radius: float) -> Body:
@@ -118,7 +124,16 @@ class Body:
         z = as_real_array("zeta", zeta)
         check("zeta", z, lambda a: a > 1, "> 1")
         r = as_real_array("radius", radius)
-        return cls(mass=mass, radius=radius, gyration=r / np.sqrt(z - 1.0))
+        body = cls(mass=mass, radius=radius, gyration=r / np.sqrt(z - 1.0))
+        object.__setattr__(body, "_zeta", float(z) if z.ndim == 0 else z)
+        return body
+
+    def _with_zeta(self, zeta: float | np.ndarray, **parts: object) -> Body:
+        """Copy with other mass/radius/gyration (e.g. one element) and the given zeta."""
+        body = Body(**{"mass": self.mass, "radius": self.radius, "gyration": self.gyration,
+                       "name": self.name, **parts})  # fmt: skip
+        object.__setattr__(body, "_zeta", zeta)
+        return body
 
     def __repr__(self) -> str:
         def fmt(x: float | np.ndarray) -> str:

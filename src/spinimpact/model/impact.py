@@ -9,9 +9,8 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import as_real_array, broadcast, check
+from .._validation import SMALLEST, as_real_array, broadcast, check
 from .body import Body
-from .restitution import RestitutionModel
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
 
@@ -19,8 +18,10 @@ Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give a
 
 
 def _out(x: np.ndarray) -> Array:
-    """NumPy scalar for 0-d results, the array otherwise."""
-    return np.asarray(x)[()]
+    """NumPy scalar for 0-d results, a read-only array otherwise (results are frozen)."""
+    arr = np.array(x)
+    arr.setflags(write=False)
+    return arr[()]
 
 
 class _Indexable:
@@ -193,13 +194,21 @@ class Impact(_Indexable):
         """Broadcast shape of the impacts (``()`` for a single impact)."""
         return np.shape(self.tau1)
 
+    def __len__(self) -> int:
+        if self.shape == ():
+            raise TypeError("len() of a single impact")
+        return self.shape[0]
+
+    def __iter__(self):  # type: ignore[no-untyped-def]
+        return (self[i] for i in range(len(self)))
+
     def __getitem__(self, index: Any) -> Impact:
         imp = super().__getitem__(index)
         body = self.body
         parts = (body.mass, body.radius, body.gyration, body.zeta)
         if any(np.ndim(x) for x in parts):
             m, r, g, z = (np.broadcast_to(x, self.shape)[index] for x in parts)
-            body = Body(mass=m, radius=r, gyration=g, name=body.name, _zeta=z)
+            body = body._with_zeta(z, mass=m, radius=r, gyration=g)
         return _replace(imp, body=body)
 
     def history(self, n: int = 201, *, tau: Any = None) -> History:
@@ -241,7 +250,7 @@ class Impact(_Indexable):
             slip=core.slip_at(grid, b.mass, slip0, b.zeta, self.mu),
             force_ratio=core.force_ratio_at(grid, b.mass, slip0, b.zeta, self.mu),
             tangential_impulse=core.friction_impulse_at(grid, b.mass, slip0, b.zeta, self.mu),
-            kinetic_energy=core.kinetic_energy_at(grid, *args, self.mu, self.kappa),
+            kinetic_energy=core.kinetic_energy_at(grid, *args, self.mu, b.inertia),
             tau0=tau0,
             tau_star=tau_star,
             tau1=tau1,
@@ -266,7 +275,7 @@ def _replace(obj: Any, **changes: Any) -> Any:
 
 
 def _restitution(kappa: Any, vy: np.ndarray) -> np.ndarray:
-    if isinstance(kappa, RestitutionModel) or callable(kappa):
+    if callable(kappa):  # a RestitutionModel or any function of the impact speed
         model: Callable[[np.ndarray], Any] = kappa
         value = model(np.abs(vy))
         name = f"kappa (from {kappa!r})"
@@ -337,6 +346,7 @@ def solve(
         as_real_array(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
     check("vy", vy_, lambda v: v < 0, "< 0 (the body must approach the surface)")
+    check("vy", vy_, lambda v: v <= -SMALLEST, f"<= -{SMALLEST:g}")
     check("mu", mu_, lambda m: m >= 0, ">= 0")
     kappa_ = _restitution(kappa, vy_)
     vx_, vy_, om_, mu_, kappa_, m, r, g, zeta = broadcast(
@@ -361,9 +371,7 @@ def solve(
     wcn, wct, wrn, wrt = core.phase_works(*inc)
     tau_m = core.min_energy_impulse(*inc)
     flags = core.rebound_outcomes(vx_, vy_, om_, r, zeta, mu_, kappa_)
-    # Restitution coefficients from the process, each by its own definition:
-    # tau0 is where v(tau) = vy + tau/m vanishes; tau1 is the total impulse m (vy+ - vy-).
-    total = m * (vy1 - vy_)
+    newton, poisson, energetic = core.restitution_coefficients(m, vy_, vy1, wcn, wrn)
     return Impact(
         body=body,
         mu=_out(mu_),
@@ -371,14 +379,14 @@ def solve(
         before=State(_out(vx_), _out(vy_), _out(om_)),
         after=State(_out(vx1), _out(vy1), _out(om1)),
         slip_before=_out(slip),
-        slip_after=_out(core.slip_at(tau1, m, slip, zeta, mu_)),
+        slip_after=_out(core.rebound_slip(slip, vy_, zeta, mu_, kappa_)),
         incidence_ratio=_out(core.incidence_ratio(slip, vy_)),
-        regime=_out(np.asarray(core.REGIMES)[core.regime_code(m, slip, vy_, zeta, mu_, kappa_)]),
+        regime=_out(np.asarray(core.REGIMES)[core.regime_code(slip, vy_, zeta, mu_, kappa_)]),
         tau0=_out(tau0),
         tau_star=_out(core.stick_impulse(m, slip, zeta, mu_)),
         tau1=_out(tau1),
         tangential_impulse=_out(f1),
-        impulse_ratio=_out(core.impulse_ratio(m, slip, vy_, zeta, mu_, kappa_)),
+        impulse_ratio=_out(core.impulse_ratio(slip, vy_, zeta, mu_, kappa_)),
         kinetic_energy_before=_out(e0),
         kinetic_energy_after=_out(core.kinetic_energy(vx1, vy1, om1, m, inertia)),
         dissipated_energy=_out(core.dissipated_energy(*inc)),
@@ -389,11 +397,11 @@ def solve(
         work_ratio_tangential=_out(
             core.work_ratio_tangential(core.incidence_ratio(slip, vy_), zeta, mu_, kappa_)
         ),
-        min_kinetic_energy=_out(core.kinetic_energy_at(tau_m, *inc)),
+        min_kinetic_energy=_out(core.kinetic_energy_at(tau_m, *inc[:-1], inertia)),
         tau_min_energy=_out(tau_m),
         min_energy_case=_out(np.asarray(core.MIN_ENERGY_CASES)[core.min_energy_case(*inc)]),
-        newton_restitution=_out(-vy1 / vy_),
-        poisson_restitution=_out((total - tau0) / tau0),
-        energetic_restitution=_out(np.sqrt(np.maximum(-wrn / wcn, 0.0))),
+        newton_restitution=_out(newton),
+        poisson_restitution=_out(poisson),
+        energetic_restitution=_out(energetic),
         outcome=Outcome(*(_out(x) for x in flags)),
     )
