@@ -42,7 +42,7 @@ def test_non_spinning_vertical_rebound():
     imp = solve(BODY, vx, -2.0, omega, mu=0.3, kappa=0.8)  # (1+kappa) mu |vy| = 1.08 >= 1
     assert imp.outcome.vertical and not imp.outcome.spinning
     assert abs(imp.after.vx) < 1e-15 and abs(imp.after.omega) < 1e-13
-    assert imp.outcome.backward is np.False_ or not imp.outcome.backward
+    assert not imp.outcome.backward and not imp.outcome.reversed_spin
 
 
 def test_spinning_vertical_rebound():

@@ -43,15 +43,15 @@ def as_real_array(name: str, value: object) -> np.ndarray:
     value : array_like
         Number or array of numbers.
     """
-    try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(
-            f"{name} must be a real number or array of numbers, got {value!r}"
-        ) from None
+    raw = np.asarray(value)
+    if raw.dtype.kind not in "iuf":  # not bool, str, None, complex, object
+        raise ValueError(f"{name} must be a real number or array of numbers, got {value!r}")
+    arr = np.array(raw, dtype=np.float64)  # a copy: later changes by the caller do not leak in
     bad = ~np.isfinite(arr)
     if bad.any():
         raise ValueError(f"{name} must be finite, got {_value(arr, bad)}{_where(bad)}")
+    check(name, arr, lambda a: np.abs(a) <= LARGEST, f"at most {LARGEST:g} in magnitude")
+    arr.setflags(write=False)
     return arr
 
 

@@ -12,6 +12,7 @@ import sys
 from typing import Any
 
 import click
+import numpy as np
 
 from .model.body import PRESETS, Body
 from .model.impact import solve
@@ -142,13 +143,18 @@ def solve_command(
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``spinimpact`` command."""
     try:
-        cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)
+        # Any floating-point trouble becomes a clean error rather than inf/NaN in a report.
+        with np.errstate(over="raise", divide="raise", invalid="raise"):
+            cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)
+    except click.exceptions.NoArgsIsHelpError as exc:
+        click.echo(exc.ctx.get_help() if exc.ctx else "")
+        sys.exit(0)
     except click.exceptions.Abort:
         click.echo("spinimpact: aborted", err=True)
         sys.exit(130)
     except click.ClickException as exc:
         click.echo(f"spinimpact: error: {exc.format_message()}", err=True)
         sys.exit(2)
-    except ValueError as exc:
+    except (ValueError, ArithmeticError) as exc:  # FloatingPointError is an ArithmeticError
         click.echo(f"spinimpact: error: {exc}", err=True)
         sys.exit(2)

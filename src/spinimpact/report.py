@@ -7,6 +7,7 @@ import math
 from rich.console import Console
 from rich.table import Table
 
+from .core import regime_thresholds
 from .model.impact import Impact
 from .model.particle import ParticleImpact
 
@@ -36,9 +37,9 @@ def print_report(
 ) -> None:
     """Print the regime, rebound, energy budget, works by phase, coefficients and
     outcome of a single impact; with ``particle``, the Whittaker particle beside it."""
-    console = console or Console(highlight=False)
+    console = console or Console(highlight=False, soft_wrap=True)
     b = imp.body
-    zmu = float(b.zeta * imp.mu)
+    compression_limit, impact_limit = regime_thresholds(b.zeta, imp.mu, imp.kappa)
     console.print(
         f"[bold]Impact of a {b.name} body[/bold]  m = {_g(b.mass, 'kg')}, R = {_g(b.radius, 'm')}, "
         f"rho = {_g(b.gyration, 'm')}, zeta = {_g(b.zeta)};  "
@@ -46,8 +47,8 @@ def print_report(
     )
     console.print(
         f"Regime: [bold]{imp.regime}[/bold]   |u-/v-| = {_g(imp.incidence_ratio)}  "
-        f"(stick in compression if <= zeta*mu = {_g(zmu)}; "
-        f"stick before rebound if <= (1+kappa)*zeta*mu = {_g((1 + imp.kappa) * zmu)})"
+        f"(stick in compression if <= zeta*mu = {_g(compression_limit)}; "
+        f"stick before rebound if <= (1+kappa)*zeta*mu = {_g(impact_limit)})"
     )
     console.print(
         f"Normal impulse: tau0 = {_g(imp.tau0, 'N s')}, tau* = {_g(imp.tau_star, 'N s')}, "

@@ -87,7 +87,9 @@ class TabulatedRestitution(RestitutionModel):
         check("speeds", s, lambda a: a >= 0, ">= 0")
         if np.any(np.diff(s) <= 0):
             i = int(np.argmax(np.diff(s) <= 0)) + 1
-            raise ValueError(f"speeds must be strictly increasing, got {s[i]!r} at index {i}")
+            raise ValueError(
+                f"speeds must be strictly increasing, got {float(s[i])!r} at index {i}"
+            )
         if extrapolate not in ("clip", "error"):
             raise ValueError(f"extrapolate must be 'clip' or 'error', got {extrapolate!r}")
         self.speeds, self.kappas, self.extrapolate = s, k, extrapolate
@@ -119,6 +121,8 @@ class TabulatedRestitution(RestitutionModel):
                 f"drop_heights and rebound_heights must have the same shape, "
                 f"got {h0.shape} and {h1.shape}"
             )
+        if np.unique(h0).size != h0.size:
+            raise ValueError(f"drop_heights must be distinct, got {h0.tolist()}")
         order = np.argsort(h0)
         return cls(
             np.sqrt(2.0 * gravity * h0[order]),
