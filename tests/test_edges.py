@@ -74,8 +74,14 @@ def test_extreme_but_valid_inputs_give_finite_results_without_warnings():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         with np.errstate(over="raise", divide="raise", invalid="raise"):  # underflow is benign
-            imp = solve(body, [1e50, -1e-50, 0.0], [-1e-50, -1e50, -1.0], [1e50, 0.0, 1e-50],
-                        mu=[1e-300, 1e50, 0.5], kappa=[0.0, 1.0, 0.5])  # fmt: skip
+            imp = solve(
+                body,
+                [1e50, -1e-50, 0.0],
+                [-1e-50, -1e50, -1.0],
+                [1e50, 0.0, 1e-50],
+                mu=[1e-300, 1e50, 0.5],
+                kappa=[0.0, 1.0, 0.5],
+            )
     for value in (imp.after.vx, imp.after.omega, imp.dissipated_energy, imp.min_kinetic_energy):
         assert np.all(np.isfinite(value))
     assert np.all(imp.min_kinetic_energy >= 0) and np.all(imp.dissipated_energy >= 0)

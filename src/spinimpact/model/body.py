@@ -130,8 +130,15 @@ class Body:
 
     def _with_zeta(self, zeta: float | np.ndarray, **parts: object) -> Body:
         """Copy with other mass/radius/gyration (e.g. one element) and the given zeta."""
-        body = Body(**{"mass": self.mass, "radius": self.radius, "gyration": self.gyration,
-                       "name": self.name, **parts})  # fmt: skip
+        body = Body(
+            **{
+                "mass": self.mass,
+                "radius": self.radius,
+                "gyration": self.gyration,
+                "name": self.name,
+                **parts,
+            }
+        )
         object.__setattr__(body, "_zeta", zeta)
         return body
 

@@ -1,0 +1,136 @@
+"""Figures: the Python API returns Matplotlib figures; `spinimpact figures` writes
+the paper's figures as files of the expected size."""
+
+import struct
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, solve
+from spinimpact.plots import PAPER_FIGURES, paper_figure, plot_energy, plot_history, plot_routh
+
+matplotlib = pytest.importorskip("matplotlib")
+
+
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    assert head[:8] == b"\x89PNG\r\n\x1a\n"
+    return struct.unpack(">II", head[16:24])
+
+
+@pytest.fixture(scope="module")
+def impact():
+    return solve(Body.solid_disk(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.25, kappa=0.6)
+
+
+def test_history_figure_draws_the_process(impact):
+    fig = plot_history(impact)
+    axes = fig.get_axes()
+    assert len(axes) == 4
+    h = impact.history(401)
+    # the plotted curves are the history arrays, in the paper's panel order
+    for ax, y in zip(axes, (h.force_ratio, h.vy, h.slip, h.omega), strict=True):
+        line = ax.get_lines()[0]
+        np.testing.assert_array_equal(line.get_ydata(), y)
+        np.testing.assert_array_equal(line.get_xdata(), h.tau)
+        # tau0, tau* and tau1 are marked
+        marks = {
+            round(float(x.get_xdata()[0]), 12)
+            for x in ax.get_lines()[1:]
+            if len(set(x.get_xdata())) == 1
+        }
+        assert {round(float(t), 12) for t in (h.tau0, h.tau_star, h.tau1)} <= marks
+    assert "stick-restitution" in fig.get_suptitle()
+
+
+def test_routh_and_energy_figures(impact):
+    fig = plot_routh(impact)
+    f = [ln for ln in fig.get_axes()[0].get_lines() if ln.get_label() == "f(τ)"][0]
+    assert f.get_ydata()[-1] == pytest.approx(float(impact.tangential_impulse))
+    fig = plot_energy(impact)
+    ax, bars = fig.get_axes()
+    x, y = ax.get_lines()[1].get_data()  # the marked minimum
+    assert x[0] == pytest.approx(float(impact.tau_min_energy))
+    assert y[0] == pytest.approx(float(impact.min_kinetic_energy))
+    heights = sorted(round(p.get_height(), 12) for p in bars.patches)
+    works = (
+        impact.work_compression_normal,
+        impact.work_restitution_normal,
+        impact.work_compression_tangential,
+        impact.work_restitution_tangential,
+    )
+    assert heights == sorted(round(float(w), 12) for w in works)
+
+
+@pytest.mark.parametrize(
+    ("name", "regime"),
+    [
+        ("fig2", "stick-restitution"),
+        ("fig3", "slip"),
+        ("fig4a", "stick-restitution"),
+        ("fig4b", "slip"),
+        ("fig5a", "stick-restitution"),
+        ("fig5b", "stick-compression"),
+        ("fig5c", "slip"),
+    ],
+)
+def test_paper_figures_are_in_their_regimes(name, regime):
+    fig = paper_figure(name)
+    assert regime in fig.get_suptitle()
+    if name.startswith("fig5"):
+        case = {"fig5a": "Fig. 5a", "fig5b": "Fig. 5b", "fig5c": "Fig. 5c"}[name]
+        assert case in fig.get_axes()[0].get_title()
+
+
+def test_unknown_paper_figure():
+    with pytest.raises(ValueError, match="figure must be one of"):
+        paper_figure("fig9")
+
+
+def test_figures_command_writes_every_figure(tmp_path):
+    out = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "figures", "--output", str(tmp_path), "--dpi", "50"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0, out.stderr
+    for name in PAPER_FIGURES:
+        path = tmp_path / f"{name}.png"
+        kind = PAPER_FIGURES[name][0]
+        inches = {"history": (8, 6.4), "routh": (6, 4.4), "energy": (9, 4.2)}[kind]
+        assert png_size(path) == (round(inches[0] * 50), round(inches[1] * 50))
+        assert path.stat().st_size > 5000
+    assert not list(tmp_path.glob(".*"))  # no temporary files left
+
+
+def test_figures_command_svg_and_bad_output(tmp_path):
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "spinimpact",
+            "figures",
+            "--output",
+            str(tmp_path),
+            "--format",
+            "svg",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0
+    assert (tmp_path / "fig3.svg").read_text().lstrip().startswith("<?xml")
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    out = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "figures", "--output", str(blocker)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 2 and len(out.stderr.strip().splitlines()) == 1
