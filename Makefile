@@ -4,7 +4,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test lint clean
+.PHONY: demo test lint images clean
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -20,6 +20,10 @@ demo: $(STAMP)  ## solve the documented default impact and print the report
 
 test: $(STAMP)  ## run the whole test suite
 	$(PY) -m pytest
+
+images: $(STAMP)  ## regenerate the README's figures in docs/images
+	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80
+	$(VENV)/bin/spinimpact figures --output docs/images --dpi 80
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests

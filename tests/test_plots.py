@@ -9,7 +9,15 @@ import numpy as np
 import pytest
 
 from spinimpact import Body, solve
-from spinimpact.plots import PAPER_FIGURES, paper_figure, plot_energy, plot_history, plot_routh
+from spinimpact.plots import (
+    PAPER_FIGURES,
+    incidence_grid,
+    paper_figure,
+    plot_energy,
+    plot_history,
+    plot_map,
+    plot_routh,
+)
 
 matplotlib = pytest.importorskip("matplotlib")
 
@@ -134,3 +142,66 @@ def test_figures_command_svg_and_bad_output(tmp_path):
         timeout=120,
     )
     assert out.returncode == 2 and len(out.stderr.strip().splitlines()) == 1
+
+
+def test_incidence_grid_is_dimensionless_and_oriented():
+    body = Body.solid_disk(mass=2.0, radius=0.05)
+    a, b, imp = incidence_grid(body, mu=0.3, kappa=0.5, extent=2.0, n=21)
+    assert imp.shape == (21, 21)
+    # element [j, i] is the impact at vx/|vy| = a[i], R omega/|vy| = b[j]; any |vy| gives
+    # the same dimensionless results
+    i, j, vy = 3, 17, -4.0
+    same = solve(body, a[i] * 4.0, vy, b[j] * 4.0 / 0.05, mu=0.3, kappa=0.5)
+    assert imp[j, i].regime == same.regime
+    loss = same.dissipated_energy / same.kinetic_energy_before
+    assert imp[j, i].dissipated_energy / imp[j, i].kinetic_energy_before == pytest.approx(loss)
+    assert imp[j, i].impulse_ratio == pytest.approx(same.impulse_ratio)
+    with pytest.raises(ValueError, match="n must be an integer >= 2"):
+        incidence_grid(body, mu=0.3, kappa=0.5, n=1)
+
+
+def test_map_figure_panels():
+    fig = plot_map(Body.ring(mass=1.0, radius=0.1), mu=0.3, kappa=0.5, n=40)
+    titles = [ax.get_title() for ax in fig.get_axes()]
+    for needle in ("regime", "rebound outcome", "energy lost", "μ̂", "W_r^t/W_c^t"):
+        assert any(needle in t for t in titles), needle
+    # every panel carries the four boundary lines |a + b| = zeta mu, (1 + kappa) zeta mu
+    regime_ax = fig.get_axes()[0]
+    assert len(regime_ax.get_lines()) == 4
+
+
+def test_map_command(tmp_path):
+    target = tmp_path / "map.png"
+    target.write_bytes(b"previous content")
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "spinimpact",
+            "map",
+            "--output",
+            str(target),
+            "--resolution",
+            "60",
+            "--dpi",
+            "50",
+            "--body",
+            "ring",
+            "--mu",
+            "0.3",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0, out.stderr
+    assert png_size(target) == (750, 460)  # 15 x 9.2 inches at 50 dpi
+    bad = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "map", "--output", str(target), "--mu", "-1"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert bad.returncode == 2 and "mu must be >= 0" in bad.stderr
+    assert png_size(target) == (750, 460)  # the earlier output is untouched
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["map.png"]

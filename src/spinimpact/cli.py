@@ -66,79 +66,147 @@ def cli() -> None:
     """
 
 
+def _options(*decorators):
+    """Bundle click options so several commands share them."""
+
+    def wrap(function):
+        for decorator in reversed(decorators):
+            function = decorator(function)
+        return function
+
+    return wrap
+
+
+body_options = _options(
+    click.option(
+        "--body",
+        type=click.Choice(list(PRESETS)),
+        default=None,
+        help=f"Body preset (default {DEFAULTS['body']}).",
+    ),
+    click.option(
+        "--mass", type=float, default=DEFAULTS["mass"], show_default=True, help="Mass m, kg."
+    ),
+    click.option(
+        "--radius",
+        type=float,
+        default=DEFAULTS["radius"],
+        show_default=True,
+        help="Contact radius R, m.",
+    ),
+    click.option(
+        "--gyration",
+        type=float,
+        default=None,
+        help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
+    ),
+)
+surface_options = _options(
+    click.option(
+        "--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0."
+    ),
+    click.option(
+        "--kappa",
+        type=float,
+        default=DEFAULTS["kappa"],
+        show_default=True,
+        help="Restitution in [0, 1].",
+    ),
+)
+incidence_options = _options(
+    click.option(
+        "--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s."
+    ),
+    click.option(
+        "--vy", type=float, default=DEFAULTS["vy"], show_default=True, help="Incidence vy < 0, m/s."
+    ),
+    click.option(
+        "--omega",
+        type=float,
+        default=DEFAULTS["omega"],
+        show_default=True,
+        help="Incidence spin, rad/s, counter-clockwise positive.",
+    ),
+)
+
+
+def _solve_options(o: dict[str, Any]):
+    """The Impact described by the shared body, incidence and surface options."""
+    body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
+    return solve(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], kappa=o["kappa"])
+
+
+def _image_format(path: str) -> str:
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in ("png", "svg", "pdf"):
+        raise click.UsageError(f"--output must end in .png, .svg or .pdf, got {path!r}")
+    return fmt
+
+
 @cli.command("solve")
-@click.option(
-    "--body",
-    type=click.Choice(list(PRESETS)),
-    default=None,
-    help=f"Body preset (default {DEFAULTS['body']}).",
-)
-@click.option("--mass", type=float, default=DEFAULTS["mass"], show_default=True, help="Mass m, kg.")
-@click.option(
-    "--radius",
-    type=float,
-    default=DEFAULTS["radius"],
-    show_default=True,
-    help="Contact radius R, m.",
-)
-@click.option(
-    "--gyration",
-    type=float,
-    default=None,
-    help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
-)
-@click.option(
-    "--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s."
-)
-@click.option(
-    "--vy", type=float, default=DEFAULTS["vy"], show_default=True, help="Incidence vy < 0, m/s."
-)
-@click.option(
-    "--omega",
-    type=float,
-    default=DEFAULTS["omega"],
-    show_default=True,
-    help="Incidence spin, rad/s, counter-clockwise positive.",
-)
-@click.option("--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0.")
-@click.option(
-    "--kappa",
-    type=float,
-    default=DEFAULTS["kappa"],
-    show_default=True,
-    help="Restitution in [0, 1].",
-)
+@body_options
+@incidence_options
+@surface_options
 @click.option(
     "--json",
     "as_json",
     is_flag=True,
     help="Print every Impact field as JSON (infinite or undefined values are null).",
 )
-def solve_command(
-    body: str | None,
-    mass: float,
-    radius: float,
-    gyration: float | None,
-    vx: float,
-    vy: float,
-    omega: float,
-    mu: float,
-    kappa: float,
-    as_json: bool,
-) -> None:
+def solve_command(as_json: bool, **options: Any) -> None:
     """Solve one impact and print the report (regime, rebound, energy, works, mu_hat).
 
     With no options it solves the documented default case: a 1 kg solid sphere
     of radius 0.1 m at vx = 3 m/s, vy = -4 m/s with 10 rad/s of backspin, on a
     surface with mu = 0.2 and kappa = 0.8.
     """
-    imp = solve(_body(body, mass, radius, gyration), vx, vy, omega, mu=mu, kappa=kappa)
+    imp = _solve_options(options)
     if as_json:
         click.echo(json.dumps(_jsonable(imp.to_dict()), indent=2))
     else:
         from .report import print_report  # Rich is imported only when a report is printed
 
-        print_report(imp, solve_particle(vx, vy, mu=mu, kappa=kappa, mass=mass))
+        o = options
+        print_report(
+            imp, solve_particle(o["vx"], o["vy"], mu=o["mu"], kappa=o["kappa"], mass=o["mass"])
+        )
+
+
+@cli.command("map")
+@body_options
+@surface_options
+@click.option(
+    "--output", default="map.png", show_default=True, help="Image file (.png, .svg, .pdf)."
+)
+@click.option(
+    "--extent",
+    type=float,
+    default=3.0,
+    show_default=True,
+    help="Axes span [-extent, extent] in vx/|vy| and R*omega/|vy|.",
+)
+@click.option(
+    "--resolution",
+    type=click.IntRange(2, 4000),
+    default=600,
+    show_default=True,
+    help="Grid points per axis.",
+)
+@click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True)
+def map_command(output: str, extent: float, resolution: int, dpi: int, **options: Any) -> None:
+    """Maps over the incidence at a fixed body, mu and kappa: regimes, rebound
+    outcomes (backward, reversed spin, vertical), energy lost, mu_hat and the
+    friction work ratio, with the regime boundaries drawn."""
+    from .io import atomic_path
+    from .plots import plot_map
+
+    fmt = _image_format(output)
+    o = options
+    body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
+    fig = plot_map(body, mu=o["mu"], kappa=o["kappa"], extent=extent, n=resolution)
+    with atomic_path(output) as tmp:
+        fig.savefig(tmp, format=fmt, dpi=dpi)
+    click.echo(output)
 
 
 @cli.command("figures")

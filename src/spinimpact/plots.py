@@ -160,3 +160,125 @@ def paper_figure(name: str) -> Figure:
     fig = {"history": plot_history, "routh": plot_routh, "energy": plot_energy}[kind](imp)
     fig.suptitle(f"{caption}\n{fig.get_suptitle() or _title(imp)}", fontsize="medium")
     return fig
+
+
+def incidence_grid(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 400):
+    """Solve every impact of an ``n`` x ``n`` grid of dimensionless incidences.
+
+    The axes are ``a = vx/|vy|`` and ``b = R omega/|vy|``, each on
+    ``[-extent, extent]``; every result of the theory depends on the incidence
+    only through these ratios (and ``zeta``, ``mu``, ``kappa``), so the grid is
+    solved at ``vy = -1`` m/s. Returns ``(a, b, impact)`` with ``impact`` of shape
+    ``(n, n)``, indexed ``[b, a]``.
+    """
+    import numpy as np
+
+    from .model.impact import solve
+
+    if not isinstance(n, int) or n < 2:
+        raise ValueError(f"n must be an integer >= 2, got {n!r}")
+    if not extent > 0:
+        raise ValueError(f"extent must be > 0, got {extent!r}")
+    a = np.linspace(-extent, extent, n)
+    b = np.linspace(-extent, extent, n)
+    radius = np.asarray(body.radius)
+    if radius.ndim:
+        raise ValueError("incidence maps need a single body, not an array of bodies")
+    imp = solve(body, a[None, :], -1.0, b[:, None] / float(radius), mu=mu, kappa=kappa)
+    return a, b, imp
+
+
+def plot_map(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 400) -> Figure:
+    """Maps over the incidence: regimes, rebound outcomes, and colour maps of the
+    energy lost ``Delta E/E^-``, the tangential impact coefficient ``mu_hat`` and
+    the friction work ratio ``W_r^t/W_c^t`` (eqs. 4.6, 4.14, 5.4-5.6, 6.15-6.19,
+    7.7-7.9). Axes are ``vx/|vy|`` and ``R omega/|vy|``; the regime boundaries
+    ``|u/v| = zeta mu`` and ``(1 + kappa) zeta mu`` are drawn on every panel.
+    """
+    import numpy as np
+    from matplotlib.colors import ListedColormap
+
+    from .core import REGIMES, regime_thresholds
+
+    a, b, imp = incidence_grid(body, mu=mu, kappa=kappa, extent=extent, n=n)
+    fig = _figure(figsize=(15, 9.2))
+    axes = fig.subplots(2, 3, sharex=True, sharey=True)
+    span = (a[0], a[-1], b[0], b[-1])
+    limits = regime_thresholds(float(body.zeta), mu, kappa)
+
+    def boundaries(ax):
+        for level, style in zip(limits, ("--", "-"), strict=True):
+            for sign in (-1, 1):  # a + b = +-level
+                ax.plot(a, sign * level - a, color="k", lw=0.9, ls=style)
+        ax.set_xlim(a[0], a[-1])
+        ax.set_ylim(b[0], b[-1])
+
+    def show(ax, field, title, cmap, label, **kw):
+        im = ax.imshow(
+            field,
+            origin="lower",
+            extent=span,
+            aspect="auto",
+            cmap=cmap,
+            interpolation="nearest",
+            **kw,
+        )
+        fig.colorbar(im, ax=ax, label=label, shrink=0.9)
+        boundaries(ax)
+        ax.set_title(title, fontsize="medium")
+        return im
+
+    codes = np.searchsorted(np.asarray(REGIMES), imp.regime, sorter=np.argsort(REGIMES))
+    order = np.argsort(REGIMES)
+    codes = order[codes]
+    colors = ["#bbbbbb", "#444444", "#4c72b0", "#8fb8de", "#dd8452"]
+    im = show(axes[0, 0], codes, "regime", ListedColormap(colors), "", vmin=-0.5, vmax=4.5)
+    im.colorbar.set_ticks(range(5), labels=list(REGIMES))
+
+    o = imp.outcome
+    outcome = o.backward.astype(int) + 2 * o.reversed_spin.astype(int)
+    labels = ["forward, same spin", "backward", "reversed spin", "backward + reversed spin"]
+    im = show(
+        axes[0, 1],
+        outcome,
+        "rebound outcome",
+        ListedColormap(["#f2f2f2", "#e15759", "#76b7b2", "#b07aa1"]),
+        "",
+        vmin=-0.5,
+        vmax=3.5,
+    )
+    im.colorbar.set_ticks(range(4), labels=labels)
+    axes[0, 1].contour(a, b, imp.after.vx, levels=[0], colors="#e15759", linewidths=1.6)
+    axes[0, 1].contour(a, b, imp.after.omega, levels=[0], colors="#2f7f79", linewidths=1.6)
+
+    loss = imp.dissipated_energy / imp.kinetic_energy_before
+    show(axes[0, 2], loss, "energy lost ΔE/E⁻", "viridis", "ΔE/E⁻", vmin=0, vmax=1)
+    show(
+        axes[1, 0],
+        imp.impulse_ratio,
+        "tangential impact coefficient μ̂ = f₁/τ₁",
+        "RdBu_r",
+        "μ̂",
+        vmin=-mu if mu else -1,
+        vmax=mu if mu else 1,
+    )
+    show(
+        axes[1, 1],
+        imp.work_ratio_tangential,
+        "friction work ratio W_r^t/W_c^t",
+        "magma",
+        "W_r^t/W_c^t",
+        vmin=0,
+        vmax=max(kappa, 1e-9),
+    )
+    show(axes[1, 2], imp.slip_after, "rebound slip u⁺/|v⁻|", "PuOr", "u⁺/|v⁻|")
+    for ax in axes[1]:
+        ax.set_xlabel("vx⁻/|vy⁻|")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("R ω⁻/|vy⁻|")
+    fig.suptitle(
+        f"{body.name} (ζ = {float(body.zeta):.4g}), μ = {mu:g}, κ = {kappa:g}.  "
+        f"Dashed: |u/v| = ζμ = {limits[0]:.3g}; solid: |u/v| = (1+κ)ζμ = {limits[1]:.3g}.  "
+        "Outcome panel lines: vx⁺ = 0 (red), ω⁺ = 0 (teal)"
+    )
+    return fig
