@@ -172,6 +172,29 @@ def solve_command(as_json: bool, **options: Any) -> None:
         )
 
 
+@cli.command("report")
+@body_options
+@incidence_options
+@surface_options
+@click.option("--output", default="impact.html", show_default=True, help="HTML file to write.")
+def report_command(output: str, **options: Any) -> None:
+    """Write one self-contained HTML page about an impact: inputs, regime, rebound,
+    energy budget, works by phase, coefficients, outcome and figures."""
+    from .html import impact_report_html
+    from .io import atomic_path
+
+    if Path(output).suffix.lower() not in (".html", ".htm"):
+        raise click.UsageError(f"--output must end in .html, got {output!r}")
+    o = options
+    imp = _solve_options(o)
+    page = impact_report_html(
+        imp, solve_particle(o["vx"], o["vy"], mu=o["mu"], kappa=o["kappa"], mass=o["mass"])
+    )
+    with atomic_path(output) as tmp:
+        tmp.write_text(page, encoding="utf-8")
+    click.echo(output)
+
+
 @cli.command("map")
 @body_options
 @surface_options
