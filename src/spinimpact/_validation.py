@@ -11,7 +11,16 @@ from collections.abc import Callable
 
 import numpy as np
 
-__all__ = ["as_real_array", "broadcast", "check", "LARGEST", "SMALLEST"]
+__all__ = [
+    "as_real_array",
+    "broadcast",
+    "check",
+    "validated",
+    "row_problems",
+    "RULES",
+    "LARGEST",
+    "SMALLEST",
+]
 
 #: Largest magnitude accepted for any input. Keeping every input within
 #: [1e-50, 1e50] keeps every product the formulas form (m v^2, zeta mu^2, ...)
@@ -72,3 +81,51 @@ def broadcast(**arrays: np.ndarray) -> list[np.ndarray]:
     except ValueError:
         shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items())
         raise ValueError(f"input shapes do not broadcast together: {shapes}") from None
+
+
+_POSITIVE = [(lambda a: a > 0, "> 0"), (lambda a: a >= SMALLEST, f">= {SMALLEST:g}")]
+
+#: The rules each named input must obey beyond being a finite number of magnitude
+#: at most ``LARGEST``: (predicate, text completing "NAME must be ...").
+RULES: dict[str, list[tuple[Callable[[np.ndarray], np.ndarray], str]]] = {
+    "vx": [],
+    "omega": [],
+    "vy": [
+        (lambda v: v < 0, "< 0 (the body must approach the surface)"),
+        (lambda v: v <= -SMALLEST, f"<= -{SMALLEST:g}"),
+    ],
+    "mu": [(lambda m: m >= 0, ">= 0")],
+    "kappa": [(lambda k: (k >= 0) & (k <= 1), "in [0, 1]")],
+    "mass": _POSITIVE,
+    "radius": _POSITIVE,
+    "gyration": _POSITIVE,
+}
+
+
+def validated(name: str, value: object, rules_for: str | None = None) -> np.ndarray:
+    """:func:`as_real_array` plus the rules of ``RULES[rules_for or name]``."""
+    arr = as_real_array(name, value)
+    for ok, rule in RULES[rules_for or name]:
+        check(name, arr, ok, rule)
+    return arr
+
+
+def row_problems(name: str, values: np.ndarray) -> np.ndarray:
+    """Per-element description of what is wrong with ``values`` ('' where nothing).
+
+    The same checks as :func:`validated`, reported for every element instead of
+    raising at the first, for batch processing that skips bad rows.
+    """
+    values = np.asarray(values, dtype=np.float64)
+    out = np.full(values.shape, "", dtype=object)
+    with np.errstate(invalid="ignore"):
+        rules = [
+            (np.isfinite, "finite"),
+            (lambda a: np.abs(a) <= LARGEST, f"at most {LARGEST:g} in magnitude"),
+            *RULES[name],
+        ]
+        for ok, rule in rules:
+            bad = ~np.asarray(ok(values), dtype=bool) & (out == "")
+            for i in np.flatnonzero(bad):
+                out[i] = f"{name} must be {rule}, got {float(values[i])!r}"
+    return out

@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import SMALLEST, as_real_array, check
+from .._validation import as_real_array, check, validated
 
 __all__ = ["Body", "PRESETS"]
 
@@ -20,9 +20,7 @@ PRESETS: dict[str, float] = {
 
 
 def _number(name: str, value: object) -> float | np.ndarray:
-    arr = as_real_array(name, value)
-    check(name, arr, lambda a: a > 0, "> 0")
-    check(name, arr, lambda a: a >= SMALLEST, f">= {SMALLEST:g}")
+    arr = validated(name, value)
     return float(arr) if arr.ndim == 0 else arr
 
 
@@ -126,6 +124,34 @@ class Body:
         r = as_real_array("radius", radius)
         body = cls(mass=mass, radius=radius, gyration=r / np.sqrt(z - 1.0))
         object.__setattr__(body, "_zeta", float(z) if z.ndim == 0 else z)
+        return body
+
+    @classmethod
+    def from_columns(
+        cls,
+        *,
+        mass: np.ndarray,
+        radius: np.ndarray,
+        preset: np.ndarray,
+        gyration: np.ndarray,
+    ) -> Body:
+        """One array-valued body from per-row columns, as in a batch file.
+
+        Rows whose ``gyration`` is NaN use their ``preset`` (a name from
+        :data:`PRESETS`) with its exact ``zeta``; the other rows are custom bodies.
+        """
+        preset = np.asarray(preset, dtype=object)
+        gyration = np.array(gyration, dtype=float)
+        custom = ~np.isnan(gyration)
+        unknown = sorted({str(p) for p in preset[~custom]} - set(PRESETS))
+        if unknown:
+            raise ValueError(f"body must be one of {', '.join(PRESETS)}; got {unknown[0]!r}")
+        ratio = np.array([PRESETS.get(str(p), 1.0) for p in preset])  # rho^2/R^2 of presets
+        radius = as_real_array("radius", radius)
+        gyration[~custom] = np.sqrt(ratio[~custom]) * radius[~custom]
+        body = cls(mass=mass, radius=radius, gyration=gyration, name="mixed")
+        zeta = np.where(custom, body.zeta, 1.0 + 1.0 / ratio)
+        object.__setattr__(body, "_zeta", zeta)
         return body
 
     def _with_zeta(self, zeta: float | np.ndarray, **parts: object) -> Body:

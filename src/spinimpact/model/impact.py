@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import SMALLEST, as_real_array, broadcast, check
+from .._validation import as_real_array, broadcast, check, validated
 from .body import Body
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
@@ -281,9 +281,7 @@ def _restitution(kappa: Any, vy: np.ndarray) -> np.ndarray:
         name = f"kappa (from {kappa!r})"
     else:
         value, name = kappa, "kappa"
-    arr = as_real_array(name, value)
-    check(name, arr, lambda k: (k >= 0) & (k <= 1), "in [0, 1]")
-    return arr
+    return validated(name, value, "kappa")
 
 
 def solve(
@@ -343,11 +341,8 @@ def solve(
     if not isinstance(body, Body):
         raise ValueError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     vx_, vy_, om_, mu_ = (
-        as_real_array(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
+        validated(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
-    check("vy", vy_, lambda v: v < 0, "< 0 (the body must approach the surface)")
-    check("vy", vy_, lambda v: v <= -SMALLEST, f"<= -{SMALLEST:g}")
-    check("mu", mu_, lambda m: m >= 0, ">= 0")
     kappa_ = _restitution(kappa, vy_)
     vx_, vy_, om_, mu_, kappa_, m, r, g, zeta = broadcast(
         vx=vx_,

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .._validation import as_real_array, check
+from .._validation import as_real_array, check, validated
 
 __all__ = ["RestitutionModel", "ConstantRestitution", "TabulatedRestitution", "STANDARD_GRAVITY"]
 
@@ -23,9 +23,7 @@ STANDARD_GRAVITY = 9.80665
 
 
 def _kappa(name: str, value: object) -> np.ndarray:
-    arr = as_real_array(name, value)
-    check(name, arr, lambda a: (a >= 0) & (a <= 1), "in [0, 1]")
-    return arr
+    return validated(name, value, "kappa")
 
 
 class RestitutionModel:

@@ -1,0 +1,191 @@
+"""`spinimpact batch`: CSV (and Parquet) files of incidences, solved in chunks."""
+
+import csv
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, solve
+from spinimpact.batch import RESULT_COLUMNS, BatchError, run_batch
+
+DEFAULTS = dict(mu=0.3, kappa=0.8, mass=1.0, radius=0.1, body="solid-sphere", gyration=None)
+
+
+def write_csv(path, header, rows):
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def cli(*args):
+    return subprocess.run(
+        [sys.executable, "-m", "spinimpact", *map(str, args)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+
+
+@pytest.fixture
+def mixed(tmp_path):
+    """Rows with per-row mu, kappa, body and a custom gyration."""
+    rng = np.random.default_rng(5)
+    n = 257
+    rows = []
+    for i in range(n):
+        body = ["", "ring", "solid-disk", "spherical-shell", "solid-sphere"][i % 5]
+        gyration = "0.25" if i % 7 == 0 else ""  # a spool: rho > R
+        rows.append(
+            [
+                repr(float(rng.normal(0, 3))),
+                repr(float(-rng.uniform(0.1, 5))),
+                repr(float(rng.normal(0, 60))),
+                repr(float(rng.uniform(0, 1))) if i % 3 else "",
+                repr(float(rng.uniform(0, 1))),
+                body,
+                gyration,
+            ]
+        )
+    path = tmp_path / "in.csv"
+    write_csv(path, ["vx", "vy", "omega", "mu", "kappa", "body", "gyration"], rows)
+    return path, rows
+
+
+def expected(row):
+    vx, vy, omega = (float(row[k]) for k in (0, 1, 2))
+    mu = float(row[3]) if row[3] else DEFAULTS["mu"]
+    kappa = float(row[4])
+    if row[6]:
+        body = Body(mass=1.0, radius=0.1, gyration=float(row[6]))
+    else:
+        body = Body.preset(row[5] or "solid-sphere", mass=1.0, radius=0.1)
+    return solve(body, vx, vy, omega, mu=mu, kappa=kappa)
+
+
+def test_csv_round_trip_equals_python_api(mixed, tmp_path):
+    path, rows = mixed
+    out = tmp_path / "out.csv"
+    result = cli("batch", path, "--output", out, "--mu", 0.3, "--chunk-size", 50)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == f"wrote {len(rows)} rows to {out}"
+    got = read_csv(out)
+    assert len(got) == len(rows)
+    assert list(got[0])[:7] == ["vx", "vy", "omega", "mu", "kappa", "body", "gyration"]
+    assert set(RESULT_COLUMNS) <= set(got[0])
+    for row, line in zip(rows, got, strict=True):
+        imp = expected(row)
+        assert line["regime"] == imp.regime
+        for name in (
+            "after_vx",
+            "after_vy",
+            "after_omega",
+            "dissipated_energy",
+            "impulse_ratio",
+            "work_restitution_tangential",
+            "min_kinetic_energy",
+            "tau_star",
+        ):
+            # shortest round-trip repr: the printed digits give back the same float
+            assert float(line[name]) == float(RESULT_COLUMNS[name](imp)), name
+        assert line["rolling"] == ("true" if imp.outcome.rolling else "false")
+
+
+def test_bad_row_stops_the_run_and_keeps_the_old_output(tmp_path):
+    src, out = tmp_path / "in.csv", tmp_path / "out.csv"
+    write_csv(
+        src, ["vx", "vy", "omega", "kappa"], [[1, -1, 0, 0.5], [2, -1, 0, 1.5], [3, -1, 0, 0.5]]
+    )
+    out.write_text("previous results\n")
+    result = cli("batch", src, "--output", out)
+    assert result.returncode == 2
+    assert result.stderr.strip() == (
+        "spinimpact: error: row 2 (line 3), column kappa: kappa must be in [0, 1], got 1.5"
+    )
+    assert out.read_text() == "previous results\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "out.csv"]
+
+
+@pytest.mark.parametrize(
+    ("header", "row", "message"),
+    [
+        (["vx", "omega"], [1, 0], "missing column 'vy'"),
+        (
+            ["vx", "vy", "omega"],
+            [1, "fast", 0],
+            "row 2 (line 3), column vy: 'fast' is not a number",
+        ),
+        (["vx", "vy", "omega"], [1, -1], "row 2 (line 3): expected 3 fields, got 2"),
+        (["vx", "vy", "omega"], [1, 0.5, 0], "column vy: vy must be < 0"),
+        (["vx", "vy", "omega"], ["", -1, 0], "column vx: empty, but vx is required"),
+        (["vx", "vy", "omega", "body"], [1, -1, 0, "cube"], "column body: must be one of"),
+        (["vx", "vy", "omega", "mass"], [1, -1, 0, -2], "column mass: mass must be > 0"),
+        (["vx", "vy", "omega", "mu"], [1, -1, 0, "nan"], "column mu: mu must be finite"),
+    ],
+)
+def test_malformed_rows_name_row_and_column(tmp_path, header, row, message):
+    src = tmp_path / "in.csv"
+    good = {"vx": 1, "vy": -1, "omega": 0, "body": "ring", "mass": 2, "mu": 0.3}
+    write_csv(src, header, [[good[h] for h in header], row])
+    with pytest.raises(BatchError, match=message.replace("(", r"\(").replace(")", r"\)")):
+        run_batch(src, tmp_path / "out.csv", defaults=DEFAULTS)
+    assert not (tmp_path / "out.csv").exists()
+
+
+def test_skip_writes_error_rows_and_counts_them(tmp_path):
+    src, out = tmp_path / "in.csv", tmp_path / "out.csv"
+    write_csv(src, ["vx", "vy", "omega"], [[1, -1, 0], [2, "x", 0], [3, 1, 0], [4, -2, 0]])
+    result = cli("batch", src, "--output", out, "--on-error", "skip", "--chunk-size", 3)
+    assert result.returncode == 0, result.stderr
+    assert "wrote 4 rows" in result.stdout and "2 with errors" in result.stdout
+    got = read_csv(out)
+    assert [r["error"] for r in got][0] == "" and got[3]["error"] == ""
+    assert "row 2 (line 3), column vy" in got[1]["error"] and got[1]["after_vx"] == ""
+    assert "row 3 (line 4), column vy: vy must be < 0" in got[2]["error"]
+    assert float(got[3]["after_vx"]) == float(
+        solve(Body.solid_sphere(mass=1, radius=0.1), 4.0, -2.0, 0.0, mu=0.2, kappa=0.8).after.vx
+    )
+
+
+def test_empty_and_missing_input(tmp_path):
+    (tmp_path / "empty.csv").write_text("")
+    result = cli("batch", tmp_path / "empty.csv", "--output", tmp_path / "o.csv")
+    assert result.returncode == 2 and "is empty" in result.stderr
+    result = cli("batch", tmp_path / "nope.csv", "--output", tmp_path / "o.csv")
+    assert result.returncode == 2 and "does not exist" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_chunking_does_not_change_results(mixed, tmp_path):
+    path, _ = mixed
+    run_batch(path, tmp_path / "a.csv", defaults=DEFAULTS, chunk_size=1)
+    run_batch(path, tmp_path / "b.csv", defaults=DEFAULTS, chunk_size=10_000)
+    assert (tmp_path / "a.csv").read_text() == (tmp_path / "b.csv").read_text()
+
+
+def test_parquet_in_and_out(mixed, tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet", reason="the [parquet] extra is not installed")
+    path, rows = mixed
+    run_batch(path, tmp_path / "out.csv", defaults=DEFAULTS, chunk_size=64)
+    run_batch(path, tmp_path / "out.parquet", defaults=DEFAULTS, chunk_size=64)
+    table = pq.read_table(tmp_path / "out.parquet").to_pydict()
+    from_csv = read_csv(tmp_path / "out.csv")
+    assert table["regime"] == [r["regime"] for r in from_csv]
+    np.testing.assert_array_equal(table["after_vx"], [float(r["after_vx"]) for r in from_csv])
+    assert table["rolling"] == [r["rolling"] == "true" for r in from_csv]
+    # Parquet input too: numeric columns straight from the file
+    pa = pytest.importorskip("pyarrow")
+    src = tmp_path / "in.parquet"
+    pq.write_table(pa.table({"vx": [1.0, 2.0], "vy": [-1.0, -2.0], "omega": [0.0, 5.0]}), src)
+    summary = run_batch(src, tmp_path / "from_parquet.csv", defaults=DEFAULTS)
+    assert summary.rows == 2
+    got = read_csv(tmp_path / "from_parquet.csv")
+    imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 2.0, -2.0, 5.0, mu=0.3, kappa=0.8)
+    assert float(got[1]["after_omega"]) == float(imp.after.omega)
