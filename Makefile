@@ -24,6 +24,7 @@ test: $(STAMP)  ## run the whole test suite
 images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80
 	$(VENV)/bin/spinimpact figures --output docs/images --dpi 80
+	$(PY) docs/scripts/convergence.py docs/images/convergence.png
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests

@@ -282,3 +282,35 @@ def plot_map(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 400
         "Outcome panel lines: vx⁺ = 0 (red), ω⁺ = 0 (teal)"
     )
     return fig
+
+
+def plot_simulation(sim) -> Figure:
+    """Normal and friction force, velocities and slip of a compliant impact
+    against time (:func:`spinimpact.dynamics.simulate`), with the end of
+    compression and the stick instant marked."""
+    fig = _figure(figsize=(10, 6.4))
+    axes = fig.subplots(2, 2, sharex=True)
+    t = sim.t * 1e3
+    series = (
+        ((sim.normal_force, "N"), (sim.friction_force, "F")),
+        ((sim.vx, "vx"), (sim.vy, "vy")),
+        ((sim.slip, "slip u"),),
+        ((sim.omega, "ω"),),
+    )
+    labels = ("force (N)", "velocity (m/s)", "slip velocity (m/s)", "angular velocity (rad/s)")
+    for ax, group, label in zip(axes.flat, series, labels, strict=True):
+        for y, name in group:
+            ax.plot(t, y, lw=1.6, label=name)
+        ax.axhline(0, color="0.7", lw=0.8, zorder=0)
+        if sim.stick_time == sim.stick_time:
+            ax.axvline(sim.stick_time * 1e3, color="0.45", ls="--", lw=0.9, label="stick")
+        ax.set_ylabel(label)
+        if len(group) > 1:
+            ax.legend(loc="best", fontsize="small")
+    for ax in axes[1]:
+        ax.set_xlabel("time (ms)")
+    fig.suptitle(
+        f"{sim.contact.__class__.__name__}: duration {sim.contact_duration * 1e3:.4g} ms, "
+        f"peak force {sim.peak_force:.4g} N, κ = {sim.newton_restitution:.4f}"
+    )
+    return fig

@@ -127,3 +127,34 @@ def print_report(
             f"changes by {_g(particle.energy_change, 'J')} ({verdict}; {when}). "
             f"The rigid body never gains energy."
         )
+
+
+def print_simulation(sim, console: Console | None = None) -> None:
+    """Print a compliant-contact simulation beside the rigid closed form at the
+    law's own restitution."""
+    console = console or Console(highlight=False, soft_wrap=True)
+    rigid = sim.rigid()
+    console.print(f"[bold]Compliant impact[/bold] with {sim.contact!r}")
+    console.print(
+        f"contact duration {_g(sim.contact_duration * 1e3, 'ms')}, peak normal force "
+        f"{_g(sim.peak_force, 'N')}, largest compression {_g(sim.max_compression * 1e6, 'µm')}"
+    )
+    if sim.stick_time == sim.stick_time:  # not NaN
+        console.print(
+            f"slip stops at t = {_g(sim.stick_time * 1e3, 'ms')} (tau = {_g(sim.tau_star, 'N s')})"
+        )
+    t = _table("Simulated vs rigid closed form", "", "simulated", "rigid", "difference")
+    rows = (
+        ("vx+ (m/s)", sim.after.vx, rigid.after.vx),
+        ("vy+ (m/s)", sim.after.vy, rigid.after.vy),
+        ("omega+ (rad/s)", sim.after.omega, rigid.after.omega),
+        ("dissipated energy (J)", sim.dissipated_energy, rigid.dissipated_energy),
+        ("mu_hat = f1/tau1", sim.impulse_ratio, rigid.impulse_ratio),
+        ("Newton restitution", sim.newton_restitution, rigid.newton_restitution),
+        ("Poisson restitution", sim.poisson_restitution, rigid.poisson_restitution),
+        ("energetic restitution", sim.energetic_restitution, rigid.energetic_restitution),
+    )
+    for label, a, b in rows:
+        t.add_row(label, _g(a), _g(b), f"{float(a) - float(b):.2e}")
+    console.print(t)
+    console.print(f"Rigid regime at kappa = {_g(rigid.kappa)}: {rigid.regime}")
