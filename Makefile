@@ -4,7 +4,7 @@ VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 
-.PHONY: demo test lint images clean
+.PHONY: demo test bench lint images clean
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -12,7 +12,7 @@ $(PY):
 
 # Reinstall whenever the project metadata changes.
 $(STAMP): pyproject.toml | $(PY)
-	$(PY) -m pip install --quiet -e '.[test,parquet]'
+	$(PY) -m pip install --quiet -e '.[test,parquet,fast]'
 	touch $(STAMP)
 
 demo: $(STAMP)  ## solve the documented default impact and print the report
@@ -20,6 +20,9 @@ demo: $(STAMP)  ## solve the documented default impact and print the report
 
 test: $(STAMP)  ## run the whole test suite
 	$(PY) -m pytest
+
+bench: $(STAMP)  ## print benchmark ratios (not part of the tests)
+	$(PY) benchmarks/bench.py
 
 images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80

@@ -1,0 +1,136 @@
+"""Benchmarks of spinimpact: ratios measured in one run, never absolute claims.
+
+Run with `make bench` (or `.venv/bin/python benchmarks/bench.py [--n N]`).
+Every figure is a ratio against a baseline measured in the same run on the
+same machine: the memory-copy bound for the fused kernel, and the fused
+kernel's time per impact for everything else.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from rich.console import Console
+from rich.table import Table
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from spinimpact import Body, solve  # noqa: E402
+from spinimpact.core import fused, rebound  # noqa: E402
+
+
+def best(fn, repeat: int = 7) -> float:
+    """Best wall time of ``repeat`` runs (the least disturbed by the machine)."""
+    times = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t)
+    return min(times)
+
+
+def python_rebound(vx, vy, omega, m, r, z, mu, k):
+    """The closed form for one impact in plain Python (the scalar-loop baseline)."""
+    u = vx + r * omega
+    if abs(u) <= (1 + k) * z * mu * abs(vy):
+        f1 = -m * u / z
+    else:
+        f1 = -mu * math.copysign(1.0, u) * (1 + k) * (-m * vy)
+    return vx + f1 / m, -k * vy, omega + (z - 1) * f1 / (m * r)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--n", type=int, default=10_000_000, help="impacts in the batch")
+    args = parser.parse_args()
+    n = args.n
+    rng = np.random.default_rng(0)
+    vx, vy, om = rng.normal(0, 3, n), -rng.uniform(0.1, 5, n), rng.normal(0, 60, n)
+    params = (1.0, 0.1, 3.5, 0.3, 0.8)  # a 1 kg solid sphere, R = 0.1 m, mu = 0.3, kappa = 0.8
+    outs = tuple(np.empty(n) for _ in range(3))
+    moved = 6 * 8 * n  # bytes: three float64 arrays read, three written
+
+    # Copy bound: the same bytes read and written, single-threaded NumPy and, if
+    # Numba is there, a parallel copy; the faster one is the bound.
+    dst = tuple(np.empty(n) for _ in range(3))
+    t_copy = best(lambda: [np.copyto(d, s) for d, s in zip(dst, (vx, vy, om), strict=True)])
+    copy_kind = "np.copyto"
+    if fused.HAVE_NUMBA:
+        import numba
+
+        @numba.njit(parallel=True)
+        def pcopy(a, b, c, x, y, z):
+            for i in numba.prange(a.size):
+                x[i] = a[i]
+                y[i] = b[i]
+                z[i] = c[i]
+
+        pcopy(vx, vy, om, *dst)
+        t_pcopy = best(lambda: pcopy(vx, vy, om, *dst))
+        if t_pcopy < t_copy:
+            t_copy, copy_kind = t_pcopy, "parallel copy (Numba)"
+
+    rows = []
+    if fused.HAVE_NUMBA:
+        fused.rebound(vx, vy, om, *params, out=outs)  # compile
+        t_fused = best(lambda: fused.rebound(vx, vy, om, *params, out=outs))
+        per = t_fused / n
+        rows.append(
+            ("fused kernel (Numba), rebound", t_fused / n, f"{t_copy / t_fused:.2f} of copy")
+        )
+        mass = np.full(n, 1.0)
+        t_arr = best(lambda: fused.rebound(vx, vy, om, mass, 0.1, 3.5, 0.3, 0.8, out=outs), 5)
+        rows.append(
+            ("fused kernel, per-impact mass array", t_arr / n, f"{t_copy / t_arr:.2f} of copy")
+        )
+    t_numpy = best(lambda: rebound(vx, vy, om, *params), 3)
+    if not fused.HAVE_NUMBA:
+        per = t_numpy / n
+    rows.append(("plain NumPy path, rebound", t_numpy / n, f"{t_copy / t_numpy:.2f} of copy"))
+    m = min(n, 1_000_000)
+    body = Body.solid_sphere(mass=1.0, radius=0.1)
+    t_solve = best(lambda: solve(body, vx[:m], vy[:m], om[:m], mu=0.3, kappa=0.8), 3) / m
+    rows.append(("solve(): every Impact field", t_solve, ""))
+    k = 50_000
+    sub = list(zip(vx[:k].tolist(), vy[:k].tolist(), om[:k].tolist(), strict=True))
+    t_py = best(lambda: [python_rebound(a, b, c, *params) for a, b, c in sub], 3) / k
+    rows.append(("pure-Python scalar loop, rebound", t_py, ""))
+    from reference import integrate_ivp
+
+    j = 30
+    g = float(body.gyration)
+    t_ivp = (
+        best(
+            lambda: [integrate_ivp(vx[i], vy[i], om[i], 1.0, 0.1, g, 0.3, 0.8) for i in range(j)], 1
+        )
+        / j
+    )
+    rows.append(("numerical integration in tau (SciPy solve_ivp)", t_ivp, ""))
+
+    table = Table(title=f"spinimpact benchmarks: {n:,} impacts, float64")
+    table.add_column("method")
+    table.add_column(
+        "time per impact / fused" if fused.HAVE_NUMBA else "time / NumPy path", justify="right"
+    )
+    table.add_column("bandwidth", justify="right")
+    for name, t, note in rows:
+        table.add_row(name, f"{t / per:,.3g}", note)
+    console = Console()
+    console.print(table)
+    console.print(
+        f"copy bound: {copy_kind}, {moved / t_copy / 1e9:.1f} GB/s of traffic in this run; "
+        f"machine: {platform.machine()}, {os.cpu_count()} cores, "
+        f"Python {platform.python_version()}, "
+        f"NumPy {np.__version__}, Numba {'yes' if fused.HAVE_NUMBA else 'no'}"
+    )
+
+
+if __name__ == "__main__":
+    main()
