@@ -28,6 +28,8 @@ __all__ = [
 LARGEST = 1e50
 #: Smallest magnitude accepted for strictly positive inputs (mass, radius, |vy|, ...).
 SMALLEST = 1e-50
+#: Largest zeta = 1 + R^2/rho^2 accepted (R/rho up to 1e10).
+MAX_ZETA = 1e20
 
 
 def _where(mask: np.ndarray) -> str:
@@ -94,7 +96,9 @@ RULES: dict[str, list[tuple[Callable[[np.ndarray], np.ndarray], str]]] = {
         (lambda v: v < 0, "< 0 (the body must approach the surface)"),
         (lambda v: v <= -SMALLEST, f"<= -{SMALLEST:g}"),
     ],
-    "mu": [(lambda m: m >= 0, ">= 0")],
+    # A Coulomb coefficient beyond 1e6 is not physical, and the bound keeps
+    # zeta mu^2 far from overflow even for zeta up to MAX_ZETA.
+    "mu": [(lambda m: m >= 0, ">= 0"), (lambda m: m <= 1e6, "<= 1e6")],
     "kappa": [(lambda k: (k >= 0) & (k <= 1), "in [0, 1]")],
     "mass": _POSITIVE,
     "radius": _POSITIVE,

@@ -410,8 +410,18 @@ def figures_command(output: str, fmt: str, dpi: int) -> None:
         click.echo(str(target))
 
 
+def _terminate(signum: int, _frame: Any) -> None:
+    """SIGTERM: unwind normally so temporary files are removed."""
+    raise SystemExit(128 + signum)
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``spinimpact`` command."""
+    import csv
+    import signal
+
+    if hasattr(signal, "SIGTERM"):
+        signal.signal(signal.SIGTERM, _terminate)
     try:
         # Any floating-point trouble becomes a clean error rather than inf/NaN in a report.
         with np.errstate(over="raise", divide="raise", invalid="raise"):
@@ -425,6 +435,10 @@ def main(argv: list[str] | None = None) -> None:
     except click.ClickException as exc:
         click.echo(f"spinimpact: error: {exc.format_message()}", err=True)
         sys.exit(2)
-    except (ValueError, ArithmeticError) as exc:  # FloatingPointError is an ArithmeticError
+    except (ValueError, ArithmeticError, csv.Error) as exc:  # FloatingPointError: Arithmetic
         click.echo(f"spinimpact: error: {exc}", err=True)
+        sys.exit(2)
+    except OSError as exc:
+        where = f"{exc.filename}: " if exc.filename else ""
+        click.echo(f"spinimpact: error: {where}{exc.strerror or exc}", err=True)
         sys.exit(2)

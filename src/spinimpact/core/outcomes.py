@@ -27,8 +27,8 @@ Together: the body rebounds vertically without spin iff
 ``R omega^- = (zeta-1) vx^-`` and ``|vx^-| <= (1+kappa) mu |v^-|``; it rebounds
 vertically with spin iff it slips throughout and ``vx^- = sign(u^-)(1+kappa) mu |v^-|``.
 
-Equalities are decided to within a few rounding errors of the velocity scale
-``|vx| + |R omega| + |vy|``.
+Equalities are decided to within a few rounding errors of the size of the
+terms in each condition (e.g. ``|(zeta-1) a| + |b|`` for ``b = (zeta-1) a``).
 """
 
 from __future__ import annotations
@@ -68,14 +68,17 @@ def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
     u = a + b
     s = np.sign(u)
     c = (1.0 + kappa) * mu * w
-    tol = _RTOL * (np.abs(a) + np.abs(b) + w)
     stick = sticks(u, vy, zeta, mu, kappa)
 
-    # Quantities with the sign of vx+ and of omega+, scaled by zeta in the stick case.
-    gx = np.where(stick, (zeta - 1.0) * a - b, zeta * (a - s * c))
-    gw = np.where(stick, b - (zeta - 1.0) * a, zeta * (b - s * (zeta - 1.0) * c))
-    zero_x = np.abs(gx) <= zeta * tol
-    zero_w = np.abs(gw) <= zeta * tol
+    # Quantities with the signs of vx+ and omega+ (times zeta), each with the size
+    # of its own terms, against which "zero" is judged.
+    za = (zeta - 1.0) * a
+    gx = np.where(stick, za - b, zeta * (a - s * c))
+    gw = np.where(stick, b - za, zeta * (b - s * (zeta - 1.0) * c))
+    size_x = np.where(stick, np.abs(za) + np.abs(b), zeta * (np.abs(a) + c))
+    size_w = np.where(stick, np.abs(za) + np.abs(b), zeta * (np.abs(b) + (zeta - 1.0) * c))
+    zero_x = np.abs(gx) <= _RTOL * size_x
+    zero_w = np.abs(gw) <= _RTOL * size_w
     backward = (a != 0) & ~zero_x & (np.sign(gx) == -np.sign(a))
     reversed_spin = (b != 0) & ~zero_w & (np.sign(gw) == -np.sign(b))
     return backward, reversed_spin, zero_x, ~zero_w, stick

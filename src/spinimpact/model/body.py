@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._validation import as_real_array, check, validated
+from .._validation import MAX_ZETA, as_real_array, check, validated
 
 __all__ = ["Body", "PRESETS"]
 
@@ -69,7 +69,13 @@ class Body:
     def __post_init__(self) -> None:
         for name in ("mass", "radius", "gyration"):
             object.__setattr__(self, name, _number(name, getattr(self, name)))
-        zeta = 1.0 + (self.radius / self.gyration) ** 2
+        with np.errstate(over="ignore"):
+            zeta = 1.0 + (self.radius / self.gyration) ** 2
+        if np.any(zeta > MAX_ZETA):
+            raise ValueError(
+                f"radius/gyration is too large: zeta = 1 + (radius/gyration)**2 must be <= "
+                f"{MAX_ZETA:g} (radius {self.radius!r}, gyration {self.gyration!r})"
+            )
         if np.any(zeta == 1.0):
             raise ValueError(
                 "radius/gyration is too small: zeta = 1 + (radius/gyration)**2 rounds to 1 "
