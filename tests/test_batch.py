@@ -43,6 +43,8 @@ def mixed(tmp_path):
     for i in range(n):
         body = ["", "ring", "solid-disk", "spherical-shell", "solid-sphere"][i % 5]
         gyration = "0.25" if i % 7 == 0 else ""  # a spool: rho > R
+        if gyration:
+            body = ""  # a row gives a body or a gyration, not both
         rows.append(
             [
                 repr(float(rng.normal(0, 3))),
@@ -189,3 +191,147 @@ def test_parquet_in_and_out(mixed, tmp_path):
     got = read_csv(tmp_path / "from_parquet.csv")
     imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 2.0, -2.0, 5.0, mu=0.3, kappa=0.8)
     assert float(got[1]["after_omega"]) == float(imp.after.omega)
+
+
+def _run(tmp_path, text, *args, name="in.csv"):
+    src = tmp_path / name
+    src.write_bytes(text.encode("utf-8") if isinstance(text, str) else text)
+    return cli("batch", src, "--output", tmp_path / "out.csv", *args)
+
+
+def test_common_csv_layouts(tmp_path):
+    # byte-order mark, CRLF line ends, blank lines, a quoted multi-line field
+    text = '\ufeffvx,vy,omega,note\r\n1,-1,0,"two\r\nlines"\r\n\r\n2,-2,5,plain\r\n\r\n'
+    result = _run(tmp_path, text)
+    assert result.returncode == 0, result.stderr
+    got = read_csv(tmp_path / "out.csv")
+    assert [r["vx"] for r in got] == ["1", "2"] and got[0]["note"] == "two\r\nlines"
+    # line numbers count physical lines, quoted line breaks included
+    bad = _run(tmp_path, 'vx,vy,omega,note\n1,-1,0,"a\nb"\n2,1,0,c\n')
+    assert "row 2 (line 4), column vy" in bad.stderr
+
+
+@pytest.mark.parametrize(
+    ("header", "message"),
+    [
+        ("vx,vy,omega,vx", "duplicate column 'vx'"),
+        ("vx,vy,omega,zeta", "input column 'zeta' has the name of an output column"),
+        ("vx;vy;omega", "missing column 'vx'"),
+    ],
+)
+def test_header_problems(tmp_path, header, message):
+    result = _run(tmp_path, header + "\n1,-1,0,0\n")
+    assert result.returncode == 2 and message in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_error_column_name_is_reserved_in_skip_mode(tmp_path):
+    result = _run(tmp_path, "vx,vy,omega,error\n1,-1,0,x\n", "--on-error", "skip")
+    assert result.returncode == 2 and "'error'" in result.stderr
+
+
+def test_body_and_gyration_per_row(tmp_path):
+    text = "vx,vy,omega,body,gyration\n1,-1,0,ring,\n1,-1,0,,0.2\n1,-1,0,ring,0.05\n1,-1,0,Ring,\n"
+    result = _run(tmp_path, text, "--gyration", "0.3", "--on-error", "skip")
+    assert result.returncode == 0, result.stderr
+    got = read_csv(tmp_path / "out.csv")
+    assert float(got[0]["zeta"]) == 2.0  # the row's body beats the default gyration
+    assert float(got[1]["zeta"]) == pytest.approx(1 + (0.1 / 0.2) ** 2)
+    assert "either body or gyration" in got[2]["error"]
+    assert "got 'Ring'" in got[3]["error"]
+
+
+def test_first_bad_row_is_reported_whatever_the_column(tmp_path):
+    result = _run(tmp_path, "vx,vy,omega\n1,-2,x\ny,-2,3\n")
+    assert result.returncode == 2 and "row 1 (line 2), column omega" in result.stderr
+
+
+def test_bad_defaults_and_outputs(tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("vx,vy,omega\n1,-1,0\n")
+    result = cli("batch", src, "--output", tmp_path / "o.csv", "--mu", "-1")
+    assert result.returncode == 2 and "--mu must be >= 0" in result.stderr
+    for target, needle in (
+        (tmp_path / "o.xlsx", "must end in .csv, .parquet or .pq"),
+        (tmp_path / "nodir" / "o.csv", "No such directory"),
+        (tmp_path, "must end in"),
+    ):
+        result = cli("batch", src, "--output", target)
+        assert result.returncode == 2 and needle in result.stderr, result.stderr
+        assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_special_file_output_is_not_replaced(tmp_path):
+    import os
+    import stat
+
+    fifo = tmp_path / "pipe.csv"
+    os.mkfifo(fifo)
+    src = tmp_path / "in.csv"
+    src.write_text("vx,vy,omega\n1,-1,0\n")
+    reader = subprocess.Popen(["cat", str(fifo)], stdout=subprocess.PIPE, text=True)
+    result = cli("batch", src, "--output", fifo)
+    out, _ = reader.communicate(timeout=60)
+    assert result.returncode == 0, result.stderr
+    assert next(csv.reader([out.splitlines()[0]]))[:4] == ["vx", "vy", "omega", "regime"]
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode)  # still a pipe
+
+
+def test_parquet_nulls_skip_and_empty(tmp_path):
+    pa = pytest.importorskip("pyarrow", reason="the [parquet] extra is not installed")
+    import pyarrow.parquet as pq
+
+    src = tmp_path / "in.parquet"
+    table = pa.table(
+        {
+            "vx": [1.0, 2.0, None],
+            "vy": [-1.0, -2.0, -1.0],
+            "omega": [0.0, 5.0, 0.0],
+            "mu": [None, 0.5, 0.1],
+            "body": [None, "ring", None],
+        }
+    )
+    pq.write_table(table, src)
+    summary = run_batch(
+        src, tmp_path / "o.parquet", defaults=DEFAULTS, on_error="skip", chunk_size=1
+    )
+    got = pq.read_table(tmp_path / "o.parquet").to_pydict()
+    assert summary.rows == 3 and summary.skipped == 1
+    imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.3, kappa=0.8)
+    assert got["after_vx"][0] == float(imp.after.vx)  # null mu took the default 0.3
+    assert got["zeta"][1] == 2.0
+    assert got["regime"][2] is None and "row 3, column vx: empty" in got["error"][2]
+    assert got["mu"] == [None, 0.5, 0.1]  # input columns keep their values and nulls
+    # a first chunk where every row is bad does not fix a wrong schema
+    bad_first = tmp_path / "bad_first.csv"
+    bad_first.write_text("vx,vy,omega\nq,-1,1\n1,-2,3\n")
+    run_batch(bad_first, tmp_path / "b.parquet", defaults=DEFAULTS, on_error="skip", chunk_size=1)
+    got = pq.read_table(tmp_path / "b.parquet").to_pydict()
+    assert got["regime"][1] == "stick-compression" and got["vx"] == [None, 1.0]
+    # no rows: a valid, empty file with the schema
+    empty = tmp_path / "empty.csv"
+    empty.write_text("vx,vy,omega\n")
+    run_batch(empty, tmp_path / "e.parquet", defaults=DEFAULTS)
+    assert pq.read_table(tmp_path / "e.parquet").num_rows == 0
+    assert "after_vx" in pq.read_table(tmp_path / "e.parquet").column_names
+
+
+def test_csv_writer_without_pyarrow_gives_the_same_values(mixed, tmp_path, monkeypatch):
+    import spinimpact.batch as batch
+
+    path, _ = mixed
+    run_batch(path, tmp_path / "arrow.csv", defaults=DEFAULTS, on_error="skip", chunk_size=100)
+    monkeypatch.setattr(batch, "_have_pyarrow", lambda: False)
+    run_batch(path, tmp_path / "plain.csv", defaults=DEFAULTS, on_error="skip", chunk_size=100)
+
+    def value(text):  # Arrow writes 2.0 as "2", Python as "2.0": compare the numbers
+        try:
+            number = float(text)
+        except ValueError:
+            return text
+        return "nan" if number != number else number
+
+    for a, b in zip(
+        read_csv(tmp_path / "arrow.csv"), read_csv(tmp_path / "plain.csv"), strict=True
+    ):
+        assert {k: value(v) for k, v in a.items()} == {k: value(v) for k, v in b.items()}

@@ -221,12 +221,19 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
     """Solve every row of SOURCE (CSV or Parquet): columns vx, vy, omega, and
     optionally mu, kappa, mass, radius, gyration, body per row (the options give
     the defaults). Writes the input columns plus every scalar Impact field."""
+    from ._validation import validated
     from .batch import run_batch
 
     o = options
     if o["gyration"] is not None and o["body"] is not None:
         raise click.UsageError("give either --body or --gyration, not both")
     defaults = {k: o[k] for k in ("mu", "kappa", "mass", "radius", "gyration")}
+    for name, value in defaults.items():  # check the defaults before reading any row
+        if value is not None:
+            try:
+                validated(name, value)
+            except ValueError as exc:
+                raise click.UsageError(f"--{exc}") from None
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
 
     from rich.console import Console
