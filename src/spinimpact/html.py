@@ -45,7 +45,7 @@ window.addEventListener('load', function () {
 
 
 def _num(x: Any, unit: str = "") -> str:
-    x = float(x)
+    x = float(x) + 0.0  # no "-0"
     text = "∞" if math.isinf(x) else ("undefined" if math.isnan(x) else f"{x:.6g}")
     return html.escape(f"{text} {unit}".rstrip())
 
@@ -205,7 +205,7 @@ def impact_report_html(imp: Impact, particle: ParticleImpact | None = None) -> s
 <title>spinimpact report: {html.escape(str(imp.regime))}</title>
 <style>{_CSS}</style><script>{_SCRIPT}</script></head>
 <body>
-<h1>Impact of a spinning {html.escape(b.name)} on a rough surface</h1>
+<h1>Impact of a {html.escape(b.name)} body on a rough surface</h1>
 <p class="sub">Regime <span class="regime" id="regime">{html.escape(str(imp.regime))}</span>
 &nbsp; |u⁻/v⁻| = {_num(imp.incidence_ratio)} (stick in compression if ≤ ζμ = {_num(low)};
 stick before rebound if ≤ (1+κ)ζμ = {_num(high)})</p>

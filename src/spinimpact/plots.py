@@ -25,8 +25,10 @@ def _figure(*args, **kwargs) -> Figure:
 
 
 def _marks(ax, h, labels: bool = True) -> None:
-    """Vertical lines at tau0, tau* and tau1 (where inside the impact)."""
-    for tau, name, style in ((h.tau0, "τ₀", ":"), (h.tau_star, "τ*", "--"), (h.tau1, "τ₁", "-")):
+    """Vertical lines at tau0, tau* and tau1 (where inside the impact), labelled on
+    three staggered rows so that close marks do not overprint."""
+    marks = [(h.tau0, "τ₀", ":"), (h.tau_star, "τ*", "--"), (h.tau1, "τ₁", "-")]
+    for row, (tau, name, style) in enumerate(marks):
         if 0 < tau <= h.tau1:
             ax.axvline(tau, color="0.45", lw=0.9, ls=style, zorder=0)
             if labels:  # the label of tau1 goes left of its line, inside the axes
@@ -36,7 +38,7 @@ def _marks(ax, h, labels: bool = True) -> None:
                     (tau, 1.0),
                     xycoords=("data", "axes fraction"),
                     ha=ha,
-                    xytext=(dx, -12),
+                    xytext=(dx, -12 - 11 * row),
                     textcoords="offset points",
                     color="0.3",
                 )
@@ -175,10 +177,10 @@ def incidence_grid(body, *, mu: float, kappa: float, extent: float = 3.0, n: int
 
     from .model.impact import solve
 
-    if not isinstance(n, int) or n < 2:
+    if not isinstance(n, int | np.integer) or n < 2:
         raise ValueError(f"n must be an integer >= 2, got {n!r}")
-    if not extent > 0:
-        raise ValueError(f"extent must be > 0, got {extent!r}")
+    if not 0 < extent <= 1e6:
+        raise ValueError(f"extent must be in (0, 1e6], got {extent!r}")
     a = np.linspace(-extent, extent, n)
     b = np.linspace(-extent, extent, n)
     radius = np.asarray(body.radius)
