@@ -12,7 +12,7 @@ $(PY):
 
 # Reinstall whenever the project metadata changes.
 $(STAMP): pyproject.toml | $(PY)
-	$(PY) -m pip install --quiet -e '.[test,parquet,fast]'
+	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask]'
 	touch $(STAMP)
 
 demo: $(STAMP)  ## solve the documented default impact and print the report

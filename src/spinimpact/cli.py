@@ -343,6 +343,100 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
         click.echo(f"wrote {plot_file}")
 
 
+@cli.command("sweep")
+@body_options
+@click.option(
+    "--vx",
+    default="-5:5:201",
+    show_default=True,
+    help="Number, START:STOP:NUM or uniform:LOW:HIGH.",
+)
+@click.option("--vy", default="-4", show_default=True, help="As --vx; values < 0.")
+@click.option("--omega", default="-50:50:201", show_default=True, help="As --vx, rad/s.")
+@click.option("--mu", default=str(DEFAULTS["mu"]), show_default=True, help="As --vx.")
+@click.option("--kappa", default=str(DEFAULTS["kappa"]), show_default=True, help="As --vx.")
+@click.option(
+    "--samples", type=click.IntRange(1), default=None, help="Random points (uniform axes)."
+)
+@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random points.")
+@click.option("--chunk-size", type=click.IntRange(1), default=1_000_000, show_default=True)
+@click.option(
+    "--output",
+    default=None,
+    help="FILE.parquet ([parquet] extra) or a new directory of .npy files, one per column.",
+)
+@click.option(
+    "--fields",
+    default="after_vx,after_vy,after_omega,regime",
+    show_default=True,
+    help="Comma-separated fields to write (after_vx, after_vy, after_omega, regime, "
+    "energy_loss, impulse_ratio, slip_after).",
+)
+@click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
+@click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
+def sweep_command(
+    samples, seed, chunk_size, output, fields, histogram, dask_address, **o: Any
+) -> None:
+    """Sweep a grid or random samples of incidence conditions in bounded memory:
+    regime fractions (always), a histogram, and/or the fields written to files."""
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TaskProgressColumn, TimeRemainingColumn
+
+    from .sweep import Sweep, parse_axis, run_sweep
+
+    body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
+    axes = {name: parse_axis(name, o[name]) for name in ("vx", "vy", "omega", "mu", "kappa")}
+    sweep = Sweep(body, axes, samples=samples, seed=seed, chunk_size=chunk_size)
+    hist = None
+    if histogram:
+        parts = histogram.split(":")
+        try:
+            hist = (parts[0], float(parts[1]), float(parts[2]), int(parts[3]))
+        except (IndexError, ValueError):
+            raise click.UsageError(
+                f"--histogram must be FIELD:LOW:HIGH:BINS, got {histogram!r}"
+            ) from None
+    client = None
+    if dask_address:
+        from distributed import Client
+
+        client = Client(dask_address, timeout=30)
+    console = Console(stderr=True)
+    try:
+        with Progress(
+            "[progress.description]{task.description}",
+            BarColumn(),
+            TaskProgressColumn(),
+            TimeRemainingColumn(),
+            console=console,
+            disable=not console.is_terminal,
+            transient=True,
+        ) as bar:
+            task = bar.add_task(f"{sweep.size:,} points", total=sweep.chunks)
+            result = run_sweep(
+                sweep,
+                histogram=hist,
+                output=output,
+                fields=tuple(f.strip() for f in fields.split(",") if f.strip()),
+                client=client,
+                progress=lambda done, total: bar.update(task, completed=done),
+            )
+    finally:
+        if client is not None:
+            client.close()
+    click.echo(f"{result.points:,} points")
+    for name, fraction in result.regime_fractions.items():
+        click.echo(f"  {name:18s} {fraction:.6f}")
+    if result.histogram is not None:
+        click.echo(f"histogram of {hist[0]}:")
+        for lo, hi, count in zip(
+            result.bin_edges[:-1], result.bin_edges[1:], result.histogram, strict=True
+        ):
+            click.echo(f"  [{lo:.6g}, {hi:.6g})  {count}")
+    if output:
+        click.echo(f"wrote {output}")
+
+
 @cli.command("map")
 @body_options
 @surface_options

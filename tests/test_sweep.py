@@ -1,0 +1,133 @@
+"""Sweeps in bounded memory: grids, random samples, files, reductions, Dask."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, solve
+from spinimpact.core import REGIMES
+from spinimpact.sweep import Sweep, parse_axis, run_sweep
+
+BODY = Body.solid_sphere(mass=1.0, radius=0.1)
+
+
+def make(chunk_size=997, samples=None, **spec):
+    axes = dict(vx="-5:5:61", vy="-4", omega="-50:50:41", mu="0.3", kappa="0.8") | spec
+    return Sweep(
+        BODY, {k: parse_axis(k, v) for k, v in axes.items()}, samples=samples, chunk_size=chunk_size
+    )
+
+
+def test_grid_sweep_equals_solve_on_the_whole_grid():
+    sweep = make()
+    result = run_sweep(sweep, histogram=("after_vx", -5, 5, 10))
+    vx, omega = np.linspace(-5, 5, 61), np.linspace(-50, 50, 41)
+    imp = solve(BODY, vx[:, None], -4.0, omega[None, :], mu=0.3, kappa=0.8)
+    assert result.points == imp.after.vx.size
+    for code, name in enumerate(REGIMES):
+        assert result.regime_counts[code] == np.sum(imp.regime == name)
+    hist, _ = np.histogram(imp.after.vx, bins=10, range=(-5, 5))
+    np.testing.assert_array_equal(result.histogram, hist)
+
+
+def test_chunk_size_does_not_change_a_grid():
+    a = run_sweep(make(chunk_size=1), histogram=("energy_loss", 0, 1, 7))
+    b = run_sweep(make(chunk_size=100_000), histogram=("energy_loss", 0, 1, 7))
+    np.testing.assert_array_equal(a.regime_counts, b.regime_counts)
+    np.testing.assert_array_equal(a.histogram, b.histogram)
+
+
+def test_npy_output_matches_solve(tmp_path):
+    out = tmp_path / "grid"
+    run_sweep(make(), output=out, fields=("after_vx", "regime", "impulse_ratio", "slip_after"))
+    vx, omega = np.load(out / "vx.npy"), np.load(out / "omega.npy")
+    imp = solve(BODY, vx, -4.0, omega, mu=0.3, kappa=0.8)
+    np.testing.assert_array_equal(np.load(out / "after_vx.npy"), imp.after.vx)
+    np.testing.assert_array_equal(np.asarray(REGIMES)[np.load(out / "regime.npy")], imp.regime)
+    np.testing.assert_array_equal(np.load(out / "impulse_ratio.npy"), imp.impulse_ratio)
+    np.testing.assert_array_equal(np.load(out / "slip_after.npy"), imp.slip_after)
+    with pytest.raises(ValueError, match="already exists"):
+        run_sweep(make(), output=out)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["grid"]  # no temporary left
+
+
+def test_random_sweep_to_parquet(tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet", reason="the [parquet] extra is not installed")
+    sweep = make(samples=5000, chunk_size=1000, vx="uniform:-5:5", omega="uniform:-50:50")
+    result = run_sweep(sweep, output=tmp_path / "s.parquet", fields=("after_omega", "energy_loss"))
+    table = pq.read_table(tmp_path / "s.parquet").to_pydict()
+    assert len(table["vx"]) == result.points == 5000
+    assert min(table["vx"]) >= -5 and max(table["vx"]) < 5
+    imp = solve(BODY, np.array(table["vx"]), -4.0, np.array(table["omega"]), mu=0.3, kappa=0.8)
+    np.testing.assert_array_equal(table["after_omega"], imp.after.omega)
+    np.testing.assert_allclose(
+        table["energy_loss"], imp.dissipated_energy / imp.kinetic_energy_before, rtol=1e-12
+    )  # two routes to E-: the kinetic energy of the state and of the body
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        (dict(vy="1"), "vy must be < 0"),
+        (dict(vy="-4:1:3"), "vy must be < 0"),
+        (dict(vx="uniform:-1:1", omega="0"), "samples must be a positive integer"),
+        (dict(vx="uniform:-1:1", samples=10), "either a grid or random samples"),
+        (dict(kappa="0:2:3"), r"kappa must be in \[0, 1\]"),
+        (dict(mu="abc"), "mu must be a number, START:STOP:NUM"),
+    ],
+)
+def test_bad_sweeps(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        make(**kwargs)
+
+
+def test_sweep_command(tmp_path):
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "spinimpact",
+            "sweep",
+            "--vx",
+            "-2:2:11",
+            "--omega",
+            "0",
+            "--histogram",
+            "after_vx:-2:2:4",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0, out.stderr
+    assert "11 points" in out.stdout and "stick-compression" in out.stdout
+    bad = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "sweep", "--histogram", "after_vx:1"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert bad.returncode == 2 and "FIELD:LOW:HIGH:BINS" in bad.stderr
+
+
+def test_dask_cluster_gives_the_same_numbers(tmp_path):
+    distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
+    sweep = make(samples=60_000, chunk_size=5000, vx="uniform:-5:5", omega="uniform:-50:50")
+    local = run_sweep(sweep, histogram=("after_vx", -5, 5, 16))
+    with (
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        remote = run_sweep(sweep, histogram=("after_vx", -5, 5, 16), client=client)
+        run_sweep(sweep, output=tmp_path / "dask", fields=("after_vx",), client=client)
+    np.testing.assert_array_equal(local.regime_counts, remote.regime_counts)
+    np.testing.assert_array_equal(local.histogram, remote.histogram)
+    run_sweep(sweep, output=tmp_path / "local", fields=("after_vx",))
+    for name in ("vx", "after_vx"):
+        np.testing.assert_array_equal(
+            np.load(tmp_path / "dask" / f"{name}.npy"), np.load(tmp_path / "local" / f"{name}.npy")
+        )
