@@ -12,8 +12,7 @@ the pieces, so no formula below divides by ``mu`` or by ``u^-``.
 
 from __future__ import annotations
 
-import numpy as np
-
+from ._xp import arrays, quiet, result
 from .kinematics import (
     compression_impulse,
     regime_code,
@@ -61,13 +60,14 @@ def work_tangential(a, b, mass, slip, zeta, mu):
     slip speed falling linearly to zero at ``tau_*`` (eq. 4.5) and staying zero
     afterwards (eq. 4.12). Always ``<= 0``.
     """
+    xp, (a, b, slip) = arrays(a, b, slip)
     tau_star = stick_impulse(mass, slip, zeta, mu)
-    lo = np.minimum(a, tau_star)
-    hi = np.minimum(b, tau_star)
-    speed0 = np.abs(slip)
+    lo = xp.minimum(a, tau_star)
+    hi = xp.minimum(b, tau_star)
+    speed0 = xp.abs(slip)
     rate = zeta * mu / mass
-    speed_lo = np.maximum(speed0 - rate * lo, 0.0)
-    speed_hi = np.maximum(speed0 - rate * hi, 0.0)
+    speed_lo = xp.maximum(speed0 - rate * lo, 0.0)
+    speed_hi = xp.maximum(speed0 - rate * hi, 0.0)
     return -mu * (hi - lo) * (speed_lo + speed_hi) / 2.0
 
 
@@ -82,7 +82,7 @@ def phase_works(vx, vy, omega, mass, radius, zeta, mu, kappa):
     slip = slip_velocity(vx, omega, radius)
     tau0 = compression_impulse(mass, vy)
     tau1 = total_impulse(mass, vy, kappa)
-    zero = np.zeros_like(tau0)
+    zero = 0.0 * tau0
     return (
         work_normal(zero, tau0, mass, vy),
         work_tangential(zero, tau0, mass, slip, zeta, mu),
@@ -101,7 +101,7 @@ def dissipated_energy(vx, vy, omega, mass, radius, zeta, mu, kappa):
     slip = slip_velocity(vx, omega, radius)
     tau1 = total_impulse(mass, vy, kappa)
     normal = 0.5 * mass * vy * vy * (1.0 - kappa * kappa)
-    return normal - work_tangential(np.zeros_like(tau1), tau1, mass, slip, zeta, mu)
+    return normal - work_tangential(0.0 * tau1, tau1, mass, slip, zeta, mu)
 
 
 def kinetic_energy_at(tau, vx, vy, omega, mass, radius, zeta, mu, inertia):
@@ -133,8 +133,9 @@ def min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa):
     slip = slip_velocity(vx, omega, radius)
     tau0 = compression_impulse(mass, vy)
     tau1 = total_impulse(mass, vy, kappa)
-    sliding = mass * (np.abs(vy) + mu * np.abs(slip)) / (1.0 + zeta * mu * mu)
-    return np.where(sticks_in_compression(slip, vy, zeta, mu), tau0, np.minimum(sliding, tau1))
+    xp, (slip, vy) = arrays(slip, vy)
+    sliding = mass * (xp.abs(vy) + mu * xp.abs(slip)) / (1.0 + zeta * mu * mu)
+    return xp.where(sticks_in_compression(slip, vy, zeta, mu), tau0, xp.minimum(sliding, tau1))
 
 
 #: Labels of :func:`min_energy_case`: where the kinetic energy is smallest.
@@ -158,8 +159,15 @@ def min_energy_case(vx, vy, omega, mass, radius, zeta, mu, kappa):
     code = regime_code(slip, vy, zeta, mu, kappa)
     tau_m = min_energy_impulse(vx, vy, omega, mass, radius, zeta, mu, kappa)
     before_end = tau_m < total_impulse(mass, vy, kappa)
-    case = np.select([code == 0, code <= 2, code == 3, before_end], [4, 1, 0, 2], 3)
-    return case.astype(np.int8)
+    xp, (tau_m,) = arrays(tau_m)
+
+    def c(value):
+        return xp.asarray(value, dtype=xp.int8)
+
+    case = xp.where(before_end, c(2), c(3))  # slip throughout: inside (c) or at the rebound
+    case = xp.where(code == 3, c(0), case)
+    case = xp.where(code <= 2, c(1), case)
+    return xp.where(code == 0, c(4), case)
 
 
 def work_ratio_tangential(ratio, zeta, mu, kappa):
@@ -178,14 +186,14 @@ def work_ratio_tangential(ratio, zeta, mu, kappa):
 
     NaN where ``mu = 0``, or ``ratio = 0``: no friction work is done at all.
     """
-    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     defined = (mu > 0) & (ratio > 0)
-    with np.errstate(all="ignore"):  # x may overflow for tiny mu; the branches below cope
-        x = ratio / np.where(defined, zeta * mu, 1.0)
+    with quiet(xp, all="ignore"):  # x may overflow for tiny mu; the branches below cope
+        x = ratio / xp.where(defined, zeta * mu, 1.0)
         mid = (x - 1.0) ** 2 / (2.0 * x - 1.0)
         high = kappa * (1.0 - (1.0 + kappa) / (2.0 * x - 1.0))  # the printed form of (6.18)
-    out = np.where(x <= 1.0, 0.0, np.where(x <= 1.0 + kappa, mid, high))
-    return np.where(defined, out, np.nan)[()]
+    out = xp.where(x <= 1.0, 0.0, xp.where(x <= 1.0 + kappa, mid, high))
+    return result(xp, xp.where(defined, out, xp.nan))
 
 
 def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
@@ -195,15 +203,18 @@ def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
     ``zeta mu <= ratio <= (1+kappa) zeta mu`` (eq. 6.17); and
     ``(kappa^2/(1+2 kappa), kappa)`` beyond (eq. 6.19). They depend on ``kappa`` only.
     """
-    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     limit = zeta * mu
     mid = kappa * kappa / (1.0 + 2.0 * kappa)
     stick_early = ratio <= limit
     slip = ratio > (1.0 + kappa) * limit
-    lower = np.where(slip, mid, 0.0)
-    upper = np.where(stick_early, 0.0, np.where(slip, kappa, mid))
+    lower = xp.where(slip, mid, 0.0)
+    upper = xp.where(stick_early, 0.0, xp.where(slip, kappa, mid))
     undefined = (mu == 0) | (ratio == 0)  # no friction work: the ratio is NaN
-    return np.where(undefined, np.nan, lower)[()], np.where(undefined, np.nan, upper)[()]
+    return (
+        result(xp, xp.where(undefined, xp.nan, lower)),
+        result(xp, xp.where(undefined, xp.nan, upper)),
+    )
 
 
 def restitution_work(ratio, zeta, mu, kappa):
@@ -214,12 +225,12 @@ def restitution_work(ratio, zeta, mu, kappa):
     ``kappa^2 - zeta mu^2 (ratio/(zeta mu) - 1)^2`` up to ``(1+kappa) zeta mu``;
     ``kappa^2 + kappa zeta mu^2 (2 + kappa - 2 ratio/(zeta mu))`` beyond.
     """
-    ratio, zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (ratio, zeta, mu, kappa)))
+    xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     limit = zeta * mu
-    excess = np.maximum(ratio - limit, 0.0)
+    excess = xp.maximum(ratio - limit, 0.0)
     mid = kappa**2 - excess**2 / zeta
     high = kappa**2 + kappa * (zeta * mu * mu * (2.0 + kappa) - 2.0 * mu * ratio)
-    return np.where(ratio <= (1.0 + kappa) * limit, mid, high)[()]
+    return result(xp, xp.where(ratio <= (1.0 + kappa) * limit, mid, high))
 
 
 def restitution_work_zero(zeta, mu, kappa):
@@ -240,13 +251,13 @@ def restitution_work_zero(zeta, mu, kappa):
     is never negative: without friction it is ``kappa^2 m (v^-)^2/2``, and without
     restitution there is no restitution phase).
     """
-    zeta, mu, kappa = np.broadcast_arrays(*map(np.asarray, (zeta, mu, kappa)))
+    xp, (zeta, mu, kappa) = arrays(zeta, mu, kappa)
     strong = zeta * mu * mu >= 1.0
-    with np.errstate(divide="ignore"):
-        weak = np.where(
+    with quiet(xp, divide="ignore"):
+        weak = xp.where(
             mu > 0,
-            (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * np.where(mu > 0, mu, 1)),
-            np.inf,
+            (kappa + (2.0 + kappa) * zeta * mu * mu) / (2.0 * xp.where(mu > 0, mu, 1.0)),
+            xp.inf,
         )
-    value = np.where(strong, zeta * mu + np.sqrt(zeta) * kappa, weak)
-    return np.where(kappa == 0, np.inf, value)[()]
+    value = xp.where(strong, zeta * mu + xp.sqrt(zeta) * kappa, weak)
+    return result(xp, xp.where(kappa == 0, xp.inf, value))

@@ -18,7 +18,7 @@ Notation (SI units)
 
 from __future__ import annotations
 
-import numpy as np
+from ._xp import arrays, quiet
 
 __all__ = [
     "REGIMES",
@@ -54,7 +54,8 @@ def slip_velocity(vx, omega, radius):
 
 def incidence_ratio(slip, vy):
     """The incidence ratio ``|u^-/v^-|`` that selects the regime (eqs. 4.6, 4.14, 4.15)."""
-    return np.abs(slip) / np.abs(vy)
+    xp, (slip, vy) = arrays(slip, vy)
+    return xp.abs(slip) / xp.abs(vy)
 
 
 def compression_impulse(mass, vy):
@@ -80,11 +81,12 @@ def stick_impulse(mass, slip, zeta, mu):
     Returns ``0`` where ``u^- = 0`` (there is no slip to end, whatever ``mu``) and
     ``+inf`` where ``mu = 0`` and ``u^- != 0`` (a frictionless contact never sticks).
     """
-    num = mass * np.abs(slip)
+    xp, (mass, slip, zeta, mu) = arrays(mass, slip, zeta, mu)
+    num = mass * xp.abs(slip)
     den = zeta * mu
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # tiny mu: tau_* -> inf
-        tau = np.where(den > 0, num / np.where(den > 0, den, 1.0), np.inf)
-    return np.where(num == 0, 0.0, tau)
+    with quiet(xp, divide="ignore", invalid="ignore", over="ignore"):  # tiny mu: tau_* -> inf
+        tau = xp.where(den > 0, num / xp.where(den > 0, den, 1.0), xp.inf)
+    return xp.where(num == 0, 0.0, tau)
 
 
 def sticks(slip, vy, zeta, mu, kappa):
@@ -95,7 +97,8 @@ def sticks(slip, vy, zeta, mu, kappa):
     (regime, rebound, ``u^+``, outcome flags), so they never disagree at the
     boundary, where the two closed forms coincide anyway.
     """
-    return np.abs(slip) <= (1.0 + kappa) * zeta * mu * np.abs(vy)
+    xp, (slip, vy) = arrays(slip, vy)
+    return xp.abs(slip) <= (1.0 + kappa) * zeta * mu * xp.abs(vy)
 
 
 def sticks_in_compression(slip, vy, zeta, mu):
@@ -103,7 +106,8 @@ def sticks_in_compression(slip, vy, zeta, mu):
 
     Evaluated as ``|u^-| <= zeta mu |v^-|``.
     """
-    return np.abs(slip) <= zeta * mu * np.abs(vy)
+    xp, (slip, vy) = arrays(slip, vy)
+    return xp.abs(slip) <= zeta * mu * xp.abs(vy)
 
 
 def regime_code(slip, vy, zeta, mu, kappa):
@@ -117,13 +121,12 @@ def regime_code(slip, vy, zeta, mu, kappa):
     4    ``slip``               ``tau_* > tau_1``, i.e. ``|u^-/v^-| > (1+kappa) zeta mu`` (eq. 4.15)
     ===  =====================  ==============================================
     """
-    code = np.where(
-        sticks_in_compression(slip, vy, zeta, mu),
-        2,
-        np.where(sticks(slip, vy, zeta, mu, kappa), 3, 4),
-    )
-    code = np.where(slip == 0, 1, code)
-    return np.where(mu == 0, 0, code).astype(np.int8)
+    xp, (slip, vy, mu) = arrays(slip, vy, mu)
+    early = xp.astype(sticks_in_compression(slip, vy, zeta, mu), xp.int8)
+    stick = xp.astype(sticks(slip, vy, zeta, mu, kappa), xp.int8)
+    code = 4 - stick - early  # 2, 3 or 4: early sticking implies sticking
+    code = xp.where(slip == 0, xp.asarray(1, dtype=xp.int8), code)
+    return xp.where(mu == 0, xp.asarray(0, dtype=xp.int8), code)
 
 
 def regime_thresholds(zeta, mu, kappa):
@@ -140,8 +143,9 @@ def friction_impulse_at(tau, mass, slip, zeta, mu):
     exact value of ``mu tau_*`` (eq. 4.3), independent of ``mu``. This is Routh's
     impact diagram (Fig. 4).
     """
+    xp, (tau, slip, mu) = arrays(tau, slip, mu)
     tau_star = stick_impulse(mass, slip, zeta, mu)
-    return np.where(tau >= tau_star, -mass * slip / zeta, -mu * np.sign(slip) * tau) + 0.0
+    return xp.where(tau >= tau_star, -mass * slip / zeta, -mu * xp.sign(slip) * tau) + 0.0
 
 
 def force_ratio_at(tau, mass, slip, zeta, mu):
@@ -149,8 +153,9 @@ def force_ratio_at(tau, mass, slip, zeta, mu):
 
     ``-mu sign(u^-)`` while slipping, ``0`` once the contact point sticks.
     """
+    xp, (tau, slip, mu) = arrays(tau, slip, mu)
     tau_star = stick_impulse(mass, slip, zeta, mu)
-    return np.where(tau < tau_star, -mu * np.sign(slip), 0.0) + 0.0
+    return xp.where(tau < tau_star, -mu * xp.sign(slip), 0.0) + 0.0
 
 
 def slip_at(tau, mass, slip, zeta, mu):
@@ -158,8 +163,9 @@ def slip_at(tau, mass, slip, zeta, mu):
 
     ``u = u^- - zeta mu sign(u^-) tau/m`` up to ``tau_*``, exactly ``0`` after.
     """
+    xp, (tau, slip, mu) = arrays(tau, slip, mu)
     tau_star = stick_impulse(mass, slip, zeta, mu)
-    return np.where(tau >= tau_star, 0.0, slip - zeta * mu * np.sign(slip) * tau / mass) + 0.0
+    return xp.where(tau >= tau_star, 0.0, slip - zeta * mu * xp.sign(slip) * tau / mass) + 0.0
 
 
 def state_at(tau, vx, vy, omega, mass, radius, zeta, mu):
@@ -179,9 +185,10 @@ def tangential_impulse(mass, slip, vy, zeta, mu, kappa):
     When the contact sticks, ``mu tau_*`` is evaluated exactly as ``m |u^-|/zeta``
     (eq. 4.3), independent of ``mu``.
     """
+    xp, (slip, vy) = arrays(slip, vy)
     stick = sticks(slip, vy, zeta, mu, kappa)
-    slide = -mu * np.sign(slip) * total_impulse(mass, vy, kappa)
-    return np.where(stick, -mass * slip / zeta, slide) + 0.0
+    slide = -mu * xp.sign(slip) * total_impulse(mass, vy, kappa)
+    return xp.where(stick, -mass * slip / zeta, slide) + 0.0
 
 
 def rebound_slip(slip, vy, zeta, mu, kappa):
@@ -190,8 +197,9 @@ def rebound_slip(slip, vy, zeta, mu, kappa):
     ``0`` when the contact sticks; ``u^- - sign(u^-) (1+kappa) zeta mu |v^-|``,
     i.e. ``u^- (1 - (1+kappa) zeta mu/|u^-/v^-|)``, when it slips throughout.
     """
+    xp, (slip, vy) = arrays(slip, vy)
     stick = sticks(slip, vy, zeta, mu, kappa)
-    return np.where(stick, 0.0, slip - np.sign(slip) * (1.0 + kappa) * zeta * mu * np.abs(vy)) + 0.0
+    return xp.where(stick, 0.0, slip - xp.sign(slip) * (1.0 + kappa) * zeta * mu * xp.abs(vy)) + 0.0
 
 
 def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
@@ -224,7 +232,8 @@ def restitution_coefficients(mass, vy, vy_after, work_compression_normal, work_r
     tau0 = compression_impulse(mass, vy)
     tau1 = mass * (vy_after - vy)
     eta2 = -work_restitution_normal / work_compression_normal
-    return -vy_after / vy, (tau1 - tau0) / tau0, np.sqrt(np.maximum(eta2, 0.0))
+    xp, (eta2,) = arrays(eta2)
+    return -vy_after / vy, (tau1 - tau0) / tau0, xp.sqrt(xp.maximum(eta2, 0.0))
 
 
 def impulse_ratio(slip, vy, zeta, mu, kappa):
@@ -246,8 +255,9 @@ def impulse_ratio(slip, vy, zeta, mu, kappa):
     ``-mu |u^-| / (u^- - u^+)``, swaps the two cases and is wrong; see
     ``docs/errata.md``.
     """
+    xp, (slip, vy) = arrays(slip, vy)
     stick = sticks(slip, vy, zeta, mu, kappa)
-    return np.where(stick, slip / ((1.0 + kappa) * zeta * vy), -mu * np.sign(slip)) + 0.0
+    return xp.where(stick, slip / ((1.0 + kappa) * zeta * vy), -mu * xp.sign(slip)) + 0.0
 
 
 def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
@@ -267,11 +277,12 @@ def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
 
     NaN where the incidence component is zero (the ratio is undefined).
     """
+    xp, (vx, vy, omega) = arrays(vx, vy, omega)
     slip = slip_velocity(vx, omega, radius)
     stick = sticks(slip, vy, zeta, mu, kappa)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with quiet(xp, divide="ignore", invalid="ignore"):
         ratio = incidence_ratio(slip, vy)
-        factor = np.where(stick, 1.0 / zeta, (1.0 + kappa) * mu / ratio)
-        rvx = np.where(vx != 0, 1.0 - factor * slip / vx, np.nan)
-        rom = np.where(omega != 0, 1.0 - (zeta - 1.0) * factor * slip / (radius * omega), np.nan)
+        factor = xp.where(stick, 1.0 / zeta, (1.0 + kappa) * mu / ratio)
+        rvx = xp.where(vx != 0, 1.0 - factor * slip / vx, xp.nan)
+        rom = xp.where(omega != 0, 1.0 - (zeta - 1.0) * factor * slip / (radius * omega), xp.nan)
     return rvx, rom

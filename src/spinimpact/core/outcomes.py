@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ._xp import arrays
 from .kinematics import sticks
 
 __all__ = ["OUTCOMES", "rebound_outcomes"]
@@ -43,7 +44,7 @@ __all__ = ["OUTCOMES", "rebound_outcomes"]
 OUTCOMES = ("backward", "reversed_spin", "vertical", "spinning", "rolling")
 
 #: Relative tolerance, in units of the velocity scale, for the equalities.
-_RTOL = 16 * np.finfo(np.float64).eps
+_RTOL = 16 * float(np.finfo(np.float64).eps)  # a Python float: any array library takes it
 
 
 def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
@@ -62,23 +63,23 @@ def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
     rolling : ndarray of bool
         ``u^+ = 0``: the body leaves rolling (the contact stuck, eq. 4.6).
     """
-    a = np.asarray(vx, dtype=float)
+    xp, (a, vy, omega) = arrays(vx, vy, omega)
     b = radius * omega
-    w = np.abs(vy)
+    w = xp.abs(vy)
     u = a + b
-    s = np.sign(u)
+    s = xp.sign(u)
     c = (1.0 + kappa) * mu * w
     stick = sticks(u, vy, zeta, mu, kappa)
 
     # Quantities with the signs of vx+ and omega+ (times zeta), each with the size
     # of its own terms, against which "zero" is judged.
     za = (zeta - 1.0) * a
-    gx = np.where(stick, za - b, zeta * (a - s * c))
-    gw = np.where(stick, b - za, zeta * (b - s * (zeta - 1.0) * c))
-    size_x = np.where(stick, np.abs(za) + np.abs(b), zeta * (np.abs(a) + c))
-    size_w = np.where(stick, np.abs(za) + np.abs(b), zeta * (np.abs(b) + (zeta - 1.0) * c))
-    zero_x = np.abs(gx) <= _RTOL * size_x
-    zero_w = np.abs(gw) <= _RTOL * size_w
-    backward = (a != 0) & ~zero_x & (np.sign(gx) == -np.sign(a))
-    reversed_spin = (b != 0) & ~zero_w & (np.sign(gw) == -np.sign(b))
+    gx = xp.where(stick, za - b, zeta * (a - s * c))
+    gw = xp.where(stick, b - za, zeta * (b - s * (zeta - 1.0) * c))
+    size_x = xp.where(stick, xp.abs(za) + xp.abs(b), zeta * (xp.abs(a) + c))
+    size_w = xp.where(stick, xp.abs(za) + xp.abs(b), zeta * (xp.abs(b) + (zeta - 1.0) * c))
+    zero_x = xp.abs(gx) <= _RTOL * size_x
+    zero_w = xp.abs(gw) <= _RTOL * size_w
+    backward = (a != 0) & ~zero_x & (xp.sign(gx) == -xp.sign(a))
+    reversed_spin = (b != 0) & ~zero_w & (xp.sign(gw) == -xp.sign(b))
     return backward, reversed_spin, zero_x, ~zero_w, stick

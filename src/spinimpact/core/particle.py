@@ -11,7 +11,7 @@ body of this package, with its stick-slip transition, never does.
 
 from __future__ import annotations
 
-import numpy as np
+from ._xp import arrays, result
 
 __all__ = ["particle_rebound", "particle_energy_change", "particle_energy_threshold"]
 
@@ -22,7 +22,8 @@ def particle_rebound(vx, vy, mu, kappa):
     ``vx+ = vx - (1+kappa) mu sign(vx) |vy|`` and ``vy+ = -kappa vy``. Where
     ``vx = 0`` the slip direction is undefined and no friction acts.
     """
-    return vx - (1.0 + kappa) * mu * np.sign(vx) * np.abs(vy), -kappa * vy
+    xp, (vx, vy) = arrays(vx, vy)
+    return vx - (1.0 + kappa) * mu * xp.sign(vx) * xp.abs(vy), -kappa * vy
 
 
 def particle_energy_change(vx, vy, mass, mu, kappa):
@@ -36,7 +37,8 @@ def particle_energy_change(vx, vy, mass, mu, kappa):
     (``u^- = vx``; for ``vx = 0`` the friction term vanishes, as in
     :func:`particle_rebound`). Positive values are energy created from nothing.
     """
-    friction = np.where(vx != 0, (1.0 + kappa) * mu * mu - 2.0 * mu * np.abs(vx / vy), 0.0)
+    xp, (vx, vy) = arrays(vx, vy)
+    friction = xp.where(vx != 0, (1.0 + kappa) * mu * mu - 2.0 * mu * xp.abs(vx / vy), 0.0)
     return 0.5 * mass * vy * vy * (1.0 + kappa) * (kappa - 1.0 + friction)
 
 
@@ -50,7 +52,7 @@ def particle_energy_threshold(mu, kappa):
     direction ("if ``u^-/|v^-| > 0.25``"); see ``docs/errata.md``.
     ``-inf`` where ``mu = 0`` (no friction, no energy created).
     """
-    mu, kappa = np.broadcast_arrays(np.asarray(mu, dtype=float), np.asarray(kappa, dtype=float))
-    safe = np.where(mu > 0, mu, 1.0)
+    xp, (mu, kappa) = arrays(mu, kappa)
+    safe = xp.where(mu > 0, mu, 1.0)
     value = ((1.0 + kappa) * mu * mu + kappa - 1.0) / (2.0 * safe)
-    return np.where(mu > 0, value, -np.inf)[()]
+    return result(xp, xp.where(mu > 0, value, -xp.inf))
