@@ -49,8 +49,40 @@ def python_rebound(vx, vy, omega, m, r, z, mu, k):
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--n", type=int, default=10_000_000, help="impacts in the batch")
+    parser.add_argument(
+        "--sweep-points", type=int, default=100_000_000, help="points of the out-of-core sweep"
+    )
     args = parser.parse_args()
     n = args.n
+    # An out-of-core sweep in a child process, started before this process holds
+    # the big arrays: Linux carries a process's peak RSS across fork and exec.
+    import resource
+    import subprocess
+
+    cmd = [
+        sys.executable,
+        "-m",
+        "spinimpact",
+        "sweep",
+        "--vx",
+        "uniform:-5:5",
+        "--vy",
+        "uniform:-6:-0.5",
+        "--omega",
+        "uniform:-60:60",
+        "--samples",
+        str(args.sweep_points),
+    ]
+    t = time.perf_counter()
+    subprocess.run(cmd, check=True, capture_output=True)
+    t_sweep = time.perf_counter() - t
+    peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024  # KiB on Linux
+    sweep_row = (
+        f"sweep of {args.sweep_points:,} random points (regime fractions)",
+        t_sweep / args.sweep_points,
+        f"peak RSS {peak:.0f} MiB",
+    )
+
     rng = np.random.default_rng(0)
     vx, vy, om = rng.normal(0, 3, n), -rng.uniform(0.1, 5, n), rng.normal(0, 60, n)
     params = (1.0, 0.1, 3.5, 0.3, 0.8)  # a 1 kg solid sphere, R = 0.1 m, mu = 0.3, kappa = 0.8
@@ -114,6 +146,7 @@ def main() -> None:
     )
     rows.append(("numerical integration in tau (SciPy solve_ivp)", t_ivp, ""))
 
+    rows.append(sweep_row)
     table = Table(title=f"spinimpact benchmarks: {n:,} impacts, float64")
     table.add_column("method")
     table.add_column(

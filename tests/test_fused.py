@@ -53,3 +53,10 @@ def test_fallback_without_numba(monkeypatch, cases):
     np.testing.assert_array_equal(
         got[0], rebound(cases["vx"], -1.0, 0.0, 1.0, 0.1, 3.5, 0.3, 0.8)[0]
     )
+
+
+def test_mixed_scalar_and_array_parameters(cases):
+    c = cases
+    args = (c["vx"], c["vy"], c["omega"], c["mass"], 0.1, c["zeta"], 0.3, 0.8)
+    for a, b in zip(fused.rebound(*args, fused=True), rebound(*args)[:3], strict=True):
+        np.testing.assert_array_equal(a, b)

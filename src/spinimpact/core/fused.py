@@ -90,6 +90,10 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     if all(p.size == 1 for p in params):  # the common sweep: one body, one surface
         _rebound_scalar(*velocities, *(float(p.reshape(-1)[0]) for p in params), *targets)
     else:
-        columns = [np.ascontiguousarray(a).reshape(-1) for a in args[3:]]
+        # 1-D broadcast views (stride 0 for a repeated value) go in as they are:
+        # copying them would cost more memory traffic than the kernel itself.
+        columns = [a if a.ndim == 1 else np.ascontiguousarray(a).reshape(-1) for a in args[3:]]
+        for c in columns:
+            c.setflags(write=False)  # broadcast views are read-only in intent; say so
         _rebound_arrays(*velocities, *columns, *targets)
     return tuple(out)
