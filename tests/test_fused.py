@@ -60,3 +60,14 @@ def test_mixed_scalar_and_array_parameters(cases):
     args = (c["vx"], c["vy"], c["omega"], c["mass"], 0.1, c["zeta"], 0.3, 0.8)
     for a, b in zip(fused.rebound(*args, fused=True), rebound(*args)[:3], strict=True):
         np.testing.assert_array_equal(a, b)
+
+
+def test_callers_arrays_and_output_dtype():
+    n = 50
+    mass, radius = np.full(n, 1.0), np.full(n, 0.1)
+    x = np.linspace(-1, 1, n)
+    fused.rebound(x, -1.0 - x**2, x, mass, radius, 3.5, 0.3, 0.8)
+    assert mass.flags.writeable and radius.flags.writeable  # untouched
+    out = tuple(np.empty(n, dtype=np.int64) for _ in range(3))
+    with pytest.raises(ValueError, match="float64"):
+        fused.rebound(x, -1.0, x, 1.0, 0.1, 3.5, 0.3, 0.8, out=out)

@@ -273,19 +273,15 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
     show_default=True,
     help="Normal contact law.",
 )
-@click.option("--youngs-modulus", type=float, default=2e9, show_default=True, help="E, Pa (hertz).")
-@click.option("--poisson-ratio", type=float, default=0.35, show_default=True, help="nu (hertz).")
+@click.option("--youngs-modulus", type=float, default=None, help="E, Pa (hertz; default 2e9).")
+@click.option("--poisson-ratio", type=float, default=None, help="nu (hertz; default 0.35).")
 @click.option(
     "--stiffness", type=float, default=None, help="k: N/m (linear) or N/m^n (hunt-crossley)."
 )
-@click.option("--damping", type=float, default=0.0, show_default=True, help="c, N s/m (linear).")
-@click.option("--exponent", type=float, default=1.5, show_default=True, help="n (hunt-crossley).")
+@click.option("--damping", type=float, default=None, help="c, N s/m (linear; default 0).")
+@click.option("--exponent", type=float, default=None, help="n (hunt-crossley; default 1.5).")
 @click.option(
-    "--alpha",
-    type=float,
-    default=0.0,
-    show_default=True,
-    help="Damping, s/m (hertz, hunt-crossley).",
+    "--alpha", type=float, default=None, help="Damping, s/m (hertz, hunt-crossley; default 0)."
 )
 @click.option(
     "--target-kappa",
@@ -303,6 +299,22 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
     body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
     speed, target = abs(o["vy"]), o["target_kappa"]
     default_k = {"linear": 1e6, "hunt-crossley": 1e8}
+    allowed = {
+        "hertz": {"youngs_modulus", "poisson_ratio", "alpha"},
+        "linear": {"stiffness", "damping"},
+        "hunt-crossley": {"stiffness", "exponent", "alpha"},
+    }[o["contact"]]
+    for name in ("youngs_modulus", "poisson_ratio", "stiffness", "damping", "exponent", "alpha"):
+        flag = "--" + name.replace("_", "-")
+        if o[name] is not None and name not in allowed:
+            raise click.UsageError(f"{flag} does not apply to --contact {o['contact']}")
+        if o[name] is not None and target is not None and name in ("damping", "alpha"):
+            raise click.UsageError(f"give either {flag} or --target-kappa, not both")
+    o["youngs_modulus"] = 2e9 if o["youngs_modulus"] is None else o["youngs_modulus"]
+    o["poisson_ratio"] = 0.35 if o["poisson_ratio"] is None else o["poisson_ratio"]
+    o["damping"] = o["damping"] or 0.0
+    o["alpha"] = o["alpha"] or 0.0
+    o["exponent"] = 1.5 if o["exponent"] is None else o["exponent"]
     if o["contact"] == "hertz":
         if o["stiffness"] is not None:
             raise click.UsageError(
@@ -536,7 +548,7 @@ def main(argv: list[str] | None = None) -> None:
     except click.ClickException as exc:
         click.echo(f"spinimpact: error: {exc.format_message()}", err=True)
         sys.exit(2)
-    except (ValueError, ArithmeticError, csv.Error) as exc:  # FloatingPointError: Arithmetic
+    except (ValueError, ArithmeticError, RuntimeError, csv.Error) as exc:
         click.echo(f"spinimpact: error: {exc}", err=True)
         sys.exit(2)
     except OSError as exc:

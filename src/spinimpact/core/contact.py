@@ -103,6 +103,7 @@ def integrate_contact(
     rtol=1e-10,
     atol=None,
     samples=400,
+    exponent=1.0,
 ):
     """Integrate one compliant impact in time (eq. 2.4) with exact stick-slip switching.
 
@@ -115,6 +116,10 @@ def integrate_contact(
         One impact; ``vy < 0``.
     time_scale : float
         Order of magnitude of the contact duration (s), for scaling.
+    exponent : float
+        Power ``n`` with which the force vanishes at separation (``N ~ delta^n``).
+        The separation event watches ``sign(N) |N|^(1/n)``, which crosses zero
+        linearly, so the root finder locates it even for ``n >= 2.5``.
     rtol, atol : float
         Tolerances of the adaptive integrator (DOP853); ``atol`` defaults to
         ``rtol`` times the natural scales.
@@ -157,7 +162,8 @@ def integrate_contact(
     compression_end.direction = 1
 
     def separation(_t, y, ratio):
-        return force(y[0], -y[2])
+        n = force(y[0], -y[2])
+        return math.copysign(abs(n) ** (1.0 / exponent), n)
 
     separation.terminal = True
     separation.direction = -1
@@ -179,7 +185,8 @@ def integrate_contact(
         if sol.t_events[0].size and math.isnan(t0):
             t0, y0 = sol.t_events[0][0], sol.y_events[0][0]
             tau0, work_n0 = y0[4], y0[6]
-        segments.append((t, sol.t[-1], sol.sol, stuck))
+        if sol.t[-1] > t:  # an event exactly at the start leaves nothing to keep
+            segments.append((t, sol.t[-1], sol.sol, stuck))
         t, y = sol.t[-1], sol.y[:, -1].copy()
         if sol.status == 0:
             raise RuntimeError("contact did not end within 1000 time scales; check the contact law")

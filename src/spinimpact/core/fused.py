@@ -82,7 +82,9 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     shape = args[0].shape
     if out is None:
         out = tuple(np.empty(shape) for _ in range(3))
-    elif len(out) != 3 or any(o.shape != shape or not o.flags.c_contiguous for o in out):
+    elif len(out) != 3 or any(
+        o.shape != shape or not o.flags.c_contiguous or o.dtype != np.float64 for o in out
+    ):
         raise ValueError(f"out must be three C-contiguous float64 arrays of shape {shape}")
     targets = [o.reshape(-1) for o in out]
     velocities = [np.ascontiguousarray(a).reshape(-1) for a in args[:3]]
@@ -93,7 +95,10 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
         # 1-D broadcast views (stride 0 for a repeated value) go in as they are:
         # copying them would cost more memory traffic than the kernel itself.
         columns = [a if a.ndim == 1 else np.ascontiguousarray(a).reshape(-1) for a in args[3:]]
+        # read-only views (never the caller's own arrays): broadcast views must
+        # not be written, and Numba asks for the flag to be explicit
+        columns = [c.view() for c in columns]
         for c in columns:
-            c.setflags(write=False)  # broadcast views are read-only in intent; say so
+            c.setflags(write=False)
         _rebound_arrays(*velocities, *columns, *targets)
     return tuple(out)

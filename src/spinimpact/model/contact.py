@@ -48,6 +48,9 @@ class ContactLaw:
     def time_scale(self, mass: float, speed: float) -> float:  # pragma: no cover - abstract
         raise NotImplementedError
 
+    #: power with which the force vanishes at separation (N ~ delta^n)
+    separation_exponent: float = 1.0
+
     def normal_impact(self, mass: float, speed: float, *, rtol: float = 1e-10) -> NormalImpact:
         """Drop without spin or friction at ``speed``: the law's restitution,
         contact duration, peak force and largest compression."""
@@ -113,7 +116,9 @@ class LinearContact(ContactLaw):
         return kernels.linear_force(delta, delta_dot, self.stiffness, self.damping)
 
     def time_scale(self, mass: float, speed: float) -> float:
-        return float(np.sqrt(mass / self.stiffness))
+        # the spring period, or the damper's relaxation time when that is shorter
+        scale = float(np.sqrt(mass / self.stiffness))
+        return min(scale, mass / self.damping) if self.damping > 0 else scale
 
     @classmethod
     def calibrated(cls, *, stiffness: float, kappa: float, mass: float) -> LinearContact:
@@ -121,8 +126,9 @@ class LinearContact(ContactLaw):
         (any speed: the law is linear)."""
         k = _param("kappa", kappa, lambda x: (x > 0) & (x <= 1), "in (0, 1]")
         m = _param("mass", mass, lambda x: x > 0, "> 0")
+        stiffness = cls(stiffness).stiffness  # validated before use
         c_crit = 2.0 * np.sqrt(stiffness * m)
-        return _calibrate(lambda c: cls(stiffness, c * c_crit), k, m, 1.0, hi=0.999)
+        return _calibrate(lambda c: cls(stiffness, c * c_crit), k, m, 1.0)
 
 
 @dataclass(frozen=True)
@@ -151,7 +157,9 @@ class HuntCrossleyContact(ContactLaw):
             self, "stiffness", _param("stiffness", self.stiffness, lambda x: x > 0, "> 0")
         )
         object.__setattr__(
-            self, "exponent", _param("exponent", self.exponent, lambda x: x >= 1, ">= 1")
+            self,
+            "exponent",
+            _param("exponent", self.exponent, lambda x: (x >= 1) & (x <= 10), "in [1, 10]"),
         )
         object.__setattr__(self, "alpha", _param("alpha", self.alpha, lambda x: x >= 0, ">= 0"))
 
@@ -159,6 +167,11 @@ class HuntCrossleyContact(ContactLaw):
         return kernels.hunt_crossley_force(
             delta, delta_dot, self.stiffness, self.exponent, self.alpha
         )
+
+    @property
+    def separation_exponent(self) -> float:  # type: ignore[override]
+        """The force vanishes like ``delta^n`` at separation."""
+        return self.exponent
 
     def time_scale(self, mass: float, speed: float) -> float:
         return float(kernels.power_law_time_scale(mass, speed, self.stiffness, self.exponent))
@@ -171,7 +184,8 @@ class HuntCrossleyContact(ContactLaw):
         k = _param("kappa", kappa, lambda x: (x > 0) & (x <= 1), "in (0, 1]")
         m = _param("mass", mass, lambda x: x > 0, "> 0")
         v = _param("speed", speed, lambda x: x > 0, "> 0")
-        return _calibrate(lambda a: cls(stiffness, exponent, a / v), k, m, v, hi=50.0)
+        law = cls(stiffness, exponent)  # validated before use
+        return _calibrate(lambda a: cls(law.stiffness, law.exponent, a / v), k, m, v)
 
 
 @dataclass(frozen=True, init=False, repr=False)
@@ -218,8 +232,11 @@ class HertzContact(HuntCrossleyContact):
         )
 
 
-def _calibrate(make, kappa: float, mass: float, speed: float, hi: float):
-    """Root-find the dimensionless damping ``x`` in ``make(x)`` giving ``kappa``."""
+def _calibrate(make, kappa: float, mass: float, speed: float):
+    """Root-find the dimensionless damping ``x`` in ``make(x)`` giving ``kappa``.
+
+    The bracket grows geometrically until the damping is strong enough.
+    """
     from scipy.optimize import brentq
 
     if kappa == 1.0:
@@ -228,9 +245,12 @@ def _calibrate(make, kappa: float, mass: float, speed: float, hi: float):
     def gap(x: float) -> float:
         return make(x).restitution(mass, speed, rtol=1e-11) - kappa
 
-    if gap(hi) > 0:
-        raise ValueError(
-            f"kappa = {kappa:g} is below what this law can reach; choose a larger kappa"
-        )
+    hi = 0.5
+    while gap(hi) > 0:
+        hi *= 4.0
+        if hi > 1e8:
+            raise ValueError(
+                f"kappa = {kappa:g} is below what this law can reach; choose a larger kappa"
+            )
     x = brentq(gap, 0.0, hi, xtol=1e-14, rtol=1e-12)
     return make(x)

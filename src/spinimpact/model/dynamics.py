@@ -151,6 +151,7 @@ def simulate(
     run = kernels.integrate_contact(
         contact.force, m, r, j, mu_, vx_, vy_, om_,
         time_scale=contact.time_scale(m, abs(vy_)), rtol=tol,
+        exponent=contact.separation_exponent,
     )  # fmt: skip
     t, y, stuck = run["t"], run["y"], run["stuck"]
     delta, vxs, vys, oms, tau, f, work_n = y
