@@ -131,3 +131,43 @@ def test_dask_cluster_gives_the_same_numbers(tmp_path):
         np.testing.assert_array_equal(
             np.load(tmp_path / "dask" / f"{name}.npy"), np.load(tmp_path / "local" / f"{name}.npy")
         )
+
+
+def test_outputs_are_ordinary_files_and_targets_are_checked(tmp_path):
+    import os
+    import stat
+
+    pytest.importorskip("pyarrow", reason="the [parquet] extra is not installed")
+    run_sweep(make(), output=tmp_path / "s.parquet")
+    run_sweep(make(), output=tmp_path / "d")
+    umask = os.umask(0)
+    os.umask(umask)
+    assert stat.S_IMODE((tmp_path / "s.parquet").stat().st_mode) == 0o666 & ~umask
+    assert stat.S_IMODE((tmp_path / "d").stat().st_mode) == 0o777 & ~umask
+    (tmp_path / "dir.parquet").mkdir()
+    with pytest.raises(ValueError, match="is a directory"):
+        run_sweep(make(), output=tmp_path / "dir.parquet")
+    with pytest.raises(ValueError, match="does not exist"):
+        run_sweep(make(), output=tmp_path / "missing" / "x.parquet")
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
+def test_random_points_do_not_depend_on_the_order_of_the_axes():
+    spec = dict(vx="uniform:-5:5", vy="-4", omega="uniform:-50:50", mu="0.3", kappa="0.8")
+    a = Sweep(BODY, {k: parse_axis(k, v) for k, v in spec.items()}, samples=100)
+    b = Sweep(BODY, {k: parse_axis(k, v) for k, v in reversed(spec.items())}, samples=100)
+    np.testing.assert_array_equal(
+        a.evaluate(0, ("after_vx",))["after_vx"], b.evaluate(0, ("after_vx",))["after_vx"]
+    )
+
+
+def test_histogram_spec_errors():
+    with pytest.raises(ValueError, match="BINS <= 1000000"):
+        run_sweep(make(), histogram=("after_vx", -1.0, 1.0, 10**9))
+    out = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "sweep", "--histogram", "after_vx:-1:1:10:extra"],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 2 and "FIELD:LOW:HIGH:BINS" in out.stderr

@@ -370,7 +370,13 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
 @click.option(
     "--samples", type=click.IntRange(1), default=None, help="Random points (uniform axes)."
 )
-@click.option("--seed", type=int, default=0, show_default=True, help="Seed of the random points.")
+@click.option(
+    "--seed",
+    type=int,
+    default=0,
+    show_default=True,
+    help="Seed of the random points (the points also depend on --chunk-size).",
+)
 @click.option("--chunk-size", type=click.IntRange(1), default=1_000_000, show_default=True)
 @click.option(
     "--output",
@@ -403,14 +409,21 @@ def sweep_command(
     if histogram:
         parts = histogram.split(":")
         try:
+            if len(parts) != 4:
+                raise ValueError
             hist = (parts[0], float(parts[1]), float(parts[2]), int(parts[3]))
-        except (IndexError, ValueError):
+        except ValueError:
             raise click.UsageError(
                 f"--histogram must be FIELD:LOW:HIGH:BINS, got {histogram!r}"
             ) from None
     client = None
     if dask_address:
-        from distributed import Client
+        try:
+            from distributed import Client
+        except ImportError:
+            raise click.UsageError(
+                "--dask needs the optional extra: pip install 'spinimpact[dask]'"
+            ) from None
 
         client = Client(dask_address, timeout=30)
     console = Console(stderr=True)

@@ -186,18 +186,29 @@ class Sweep:
         """Input arrays of chunk ``k`` (points ``k*chunk_size`` onwards)."""
         start = k * self.chunk_size
         n = min(self.chunk_size, self.size - start)
+        # Fixed inputs stay Python numbers, so the kernels take their fast
+        # scalar-parameter path; varying inputs are arrays of the chunk's length.
         if self.random:
             rng = np.random.default_rng([self.seed, k])
-            return {
-                name: rng.uniform(a.lo, a.hi, n) if a.kind == "uniform" else np.full(n, a.lo)
-                for name, a in self.axes.items()
-            }
+            out: dict[str, Any] = {}
+            for name in INPUTS:  # a fixed order: the draws do not depend on dict order
+                a = self.axes[name]
+                out[name] = rng.uniform(a.lo, a.hi, n) if a.kind == "uniform" else a.lo
+            return out
         shape = tuple(self.axes[name].num for name in INPUTS)
         index = np.unravel_index(np.arange(start, start + n), shape)
-        return {name: self.axes[name].values()[i] for name, i in zip(INPUTS, index, strict=True)}
+        return {
+            name: self.axes[name].values()[i]
+            if self.axes[name].kind == "grid"
+            else self.axes[name].lo
+            for name, i in zip(INPUTS, index, strict=True)
+        }
+
+    def chunk_length(self, k: int) -> int:
+        return min(self.chunk_size, self.size - k * self.chunk_size)
 
     def evaluate(self, k: int, fields: tuple[str, ...]) -> dict[str, np.ndarray]:
-        """Inputs and ``fields`` of chunk ``k``."""
+        """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length."""
         c = self.chunk(k)
         out = dict(c)
         if any(name.startswith("after_") for name in fields):  # one fused pass for all three
@@ -205,7 +216,8 @@ class Sweep:
         for name in fields:
             if name not in out:
                 out[name] = FIELDS[name](c, self._body)
-        return {name: out[name] for name in (*c, *fields)}
+        n = self.chunk_length(k)
+        return {name: np.broadcast_to(out[name], (n,)) for name in (*c, *fields)}
 
 
 @dataclass
@@ -280,8 +292,10 @@ def run_sweep(
         name, lo, hi, bins = histogram
         if name not in FIELDS:
             raise ValueError(f"histogram field must be among {', '.join(FIELDS)}; got {name!r}")
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or int(bins) < 1:
-            raise ValueError(f"histogram needs LOW < HIGH and BINS >= 1, got {lo}:{hi}:{bins}")
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
+            raise ValueError(
+                f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
+            )
     result = SweepResult()
     if histogram is not None:
         result.histogram = np.zeros(int(histogram[3]), np.int64)
@@ -344,13 +358,27 @@ class _EvaluateWork:
         return data, hist
 
 
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
 class _ParquetColumns:
-    """Streams chunks to one Parquet file, renamed into place on success."""
+    """Streams chunks to one Parquet file under a temporary name; renamed on success."""
 
     def __init__(self, path, columns) -> None:
-        import pyarrow.parquet as pq  # noqa: F401  (fail early without the extra)
-
+        try:
+            import pyarrow.parquet  # noqa: F401
+        except ImportError:
+            raise ValueError(
+                "Parquet output needs the optional extra: pip install 'spinimpact[parquet]'"
+            ) from None
         self.target = Path(path)
+        if self.target.is_dir():
+            raise ValueError(f"output {str(self.target)!r} is a directory")
+        if not self.target.parent.is_dir():
+            raise ValueError(f"the directory of the output {str(self.target)!r} does not exist")
         fd, name = tempfile.mkstemp(
             prefix=f".{self.target.name}.", suffix=".part", dir=self.target.parent
         )
@@ -361,7 +389,7 @@ class _ParquetColumns:
         import pyarrow as pa
         import pyarrow.parquet as pq
 
-        table = pa.table(data)
+        table = pa.table({k: np.ascontiguousarray(v) for k, v in data.items()})
         if self.writer is None:
             self.writer = pq.ParquetWriter(self.tmp, table.schema)
         self.writer.write_table(table)
@@ -369,6 +397,8 @@ class _ParquetColumns:
     def commit(self) -> None:
         if self.writer is not None:
             self.writer.close()
+            self.writer = None
+        os.chmod(self.tmp, 0o666 & ~_umask())
         os.replace(self.tmp, self.target)
 
     def discard(self) -> None:
@@ -378,34 +408,51 @@ class _ParquetColumns:
 
 
 class _NpyColumns:
-    """Streams chunks into one ``.npy`` file per column of a new directory."""
+    """Streams chunks into one ``.npy`` file per column of a new directory.
+
+    Each chunk is appended with an ordinary file write after the ``.npy``
+    header (no memory map), so resident memory stays bounded by the chunk.
+    """
 
     def __init__(self, path, columns, size: int) -> None:
         self.target = Path(path)
         if self.target.exists():
             raise ValueError(f"output directory {str(self.target)!r} already exists")
+        if not self.target.parent.is_dir():
+            raise ValueError(f"the directory of the output {str(self.target)!r} does not exist")
         self.tmp = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.", dir=self.target.parent))
-        self.arrays = {}
+        self.files = {}
         for c in columns:
-            dtype = np.int8 if c == "regime" else np.float64
-            self.arrays[c] = np.lib.format.open_memmap(
-                self.tmp / f"{c}.npy", mode="w+", dtype=dtype, shape=(size,)
+            dtype = np.dtype(np.int8 if c == "regime" else np.float64)
+            f = open(self.tmp / f"{c}.npy", "wb")  # noqa: SIM115 (closed in commit/discard)
+            np.lib.format.write_array_header_1_0(
+                f,
+                {
+                    "descr": np.lib.format.dtype_to_descr(dtype),
+                    "fortran_order": False,
+                    "shape": (size,),
+                },
             )
-        self.at = 0
+            self.files[c] = (f, dtype)
 
     def write(self, data: dict[str, np.ndarray]) -> None:
-        n = next(iter(data.values())).size
         for c, values in data.items():
-            self.arrays[c][self.at : self.at + n] = values
-        self.at += n
+            f, dtype = self.files[c]
+            f.write(np.ascontiguousarray(values, dtype=dtype).tobytes())
+
+    def _close(self) -> None:
+        for f, _ in self.files.values():
+            f.close()
+        self.files = {}
 
     def commit(self) -> None:
-        for a in self.arrays.values():
-            a.flush()
-        self.arrays.clear()
+        self._close()
+        os.chmod(self.tmp, 0o777 & ~_umask())
+        for child in self.tmp.iterdir():
+            os.chmod(child, 0o666 & ~_umask())
         os.replace(self.tmp, self.target)
 
     def discard(self) -> None:
-        self.arrays.clear()
+        self._close()
         if self.tmp.exists():
             shutil.rmtree(self.tmp)
