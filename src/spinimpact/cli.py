@@ -77,6 +77,13 @@ def _options(*decorators):
     return wrap
 
 
+def _default(name: str, help: str):
+    """A float option whose default is the documented default case's."""
+    return click.option(
+        f"--{name}", type=float, default=DEFAULTS[name], show_default=True, help=help
+    )
+
+
 body_options = _options(
     click.option(
         "--body",
@@ -84,16 +91,8 @@ body_options = _options(
         default=None,
         help=f"Body preset (default {DEFAULTS['body']}).",
     ),
-    click.option(
-        "--mass", type=float, default=DEFAULTS["mass"], show_default=True, help="Mass m, kg."
-    ),
-    click.option(
-        "--radius",
-        type=float,
-        default=DEFAULTS["radius"],
-        show_default=True,
-        help="Contact radius R, m.",
-    ),
+    _default("mass", "Mass m, kg."),
+    _default("radius", "Contact radius R, m."),
     click.option(
         "--gyration",
         type=float,
@@ -102,31 +101,13 @@ body_options = _options(
     ),
 )
 surface_options = _options(
-    click.option(
-        "--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0."
-    ),
-    click.option(
-        "--kappa",
-        type=float,
-        default=DEFAULTS["kappa"],
-        show_default=True,
-        help="Restitution in [0, 1].",
-    ),
+    _default("mu", "Friction >= 0."),
+    _default("kappa", "Restitution in [0, 1]."),
 )
 incidence_options = _options(
-    click.option(
-        "--vx", type=float, default=DEFAULTS["vx"], show_default=True, help="Incidence vx, m/s."
-    ),
-    click.option(
-        "--vy", type=float, default=DEFAULTS["vy"], show_default=True, help="Incidence vy < 0, m/s."
-    ),
-    click.option(
-        "--omega",
-        type=float,
-        default=DEFAULTS["omega"],
-        show_default=True,
-        help="Incidence spin, rad/s, counter-clockwise positive.",
-    ),
+    _default("vx", "Incidence vx, m/s."),
+    _default("vy", "Incidence vy < 0, m/s."),
+    _default("omega", "Incidence spin, rad/s, counter-clockwise positive."),
 )
 
 
