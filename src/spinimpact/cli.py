@@ -117,6 +117,23 @@ def _solve_options(o: dict[str, Any]):
     return solve(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], kappa=o["kappa"])
 
 
+def _progress():
+    """A Rich progress bar on stderr, shown only on a terminal."""
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TaskProgressColumn, TimeRemainingColumn
+
+    console = Console(stderr=True)
+    return Progress(
+        "[progress.description]{task.description}",
+        BarColumn(),
+        TaskProgressColumn(),
+        TimeRemainingColumn(),
+        console=console,
+        disable=not console.is_terminal,
+        transient=True,
+    )
+
+
 def _image_format(path: str) -> str:
     fmt = Path(path).suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
@@ -217,19 +234,7 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
                 raise click.UsageError(f"--{exc}") from None
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
 
-    from rich.console import Console
-    from rich.progress import BarColumn, Progress, TaskProgressColumn, TimeRemainingColumn
-
-    console = Console(stderr=True)
-    with Progress(
-        "[progress.description]{task.description}",
-        BarColumn(),
-        TaskProgressColumn(),
-        TimeRemainingColumn(),
-        console=console,
-        disable=not console.is_terminal,
-        transient=True,
-    ) as bar:
+    with _progress() as bar:
         task = bar.add_task(f"solving {Path(source).name}", total=None)
         summary = run_batch(
             source,
@@ -378,9 +383,6 @@ def sweep_command(
 ) -> None:
     """Sweep a grid or random samples of incidence conditions in bounded memory:
     regime fractions (always), a histogram, and/or the fields written to files."""
-    from rich.console import Console
-    from rich.progress import BarColumn, Progress, TaskProgressColumn, TimeRemainingColumn
-
     from .sweep import Sweep, parse_axis, run_sweep
 
     body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
@@ -407,17 +409,8 @@ def sweep_command(
             ) from None
 
         client = Client(dask_address, timeout=30)
-    console = Console(stderr=True)
     try:
-        with Progress(
-            "[progress.description]{task.description}",
-            BarColumn(),
-            TaskProgressColumn(),
-            TimeRemainingColumn(),
-            console=console,
-            disable=not console.is_terminal,
-            transient=True,
-        ) as bar:
+        with _progress() as bar:
             task = bar.add_task(f"{sweep.size:,} points", total=sweep.chunks)
             result = run_sweep(
                 sweep,
