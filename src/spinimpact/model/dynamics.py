@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import core
 from .._validation import as_real_array, validated
 from ..core import contact as kernels
 from .body import Body
@@ -160,8 +161,10 @@ def simulate(
     ratio = np.where(stuck, 0.0, -mu_ * np.sign(vxs + r * oms))
     end = y[:, -1]
     tau0, tau1 = run["tau0"], end[4]
-    e0 = 0.5 * m * (vx_**2 + vy_**2) + 0.5 * j * om_**2
-    e1 = 0.5 * m * (end[1] ** 2 + end[2] ** 2) + 0.5 * j * end[3] ** 2
+    e0 = float(core.kinetic_energy(vx_, vy_, om_, m, j))
+    e1 = float(core.kinetic_energy(end[1], end[2], end[3], m, j))
+    # Restitution measured on the simulated process (tau0 at the event v = 0, tau1
+    # the integrated impulse), not by core.restitution_coefficients' closed tau0.
     w_c, w_r = run["work_n0"], end[6] - run["work_n0"]
     t_star = run["t_star"]
     tau_star = float(np.interp(t_star, t, tau)) if not math.isnan(t_star) else math.nan
