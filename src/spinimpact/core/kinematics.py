@@ -280,9 +280,12 @@ def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
     xp, (vx, vy, omega) = arrays(vx, vy, omega)
     slip = slip_velocity(vx, omega, radius)
     stick = sticks(slip, vy, zeta, mu, kappa)
-    with quiet(xp, divide="ignore", invalid="ignore"):
-        ratio = incidence_ratio(slip, vy)
-        factor = xp.where(stick, 1.0 / zeta, (1.0 + kappa) * mu / ratio)
-        rvx = xp.where(vx != 0, 1.0 - factor * slip / vx, xp.nan)
-        rom = xp.where(omega != 0, 1.0 - (zeta - 1.0) * factor * slip / (radius * omega), xp.nan)
+    # Every divisor is guarded (replaced by 1 where its branch is discarded), so no
+    # branch divides by zero: lazy libraries such as Dask evaluate where() outside
+    # any error-state context, and would otherwise warn.
+    ratio = incidence_ratio(slip, vy)
+    factor = xp.where(stick, 1.0 / zeta, (1.0 + kappa) * mu / xp.where(stick, 1.0, ratio))
+    rvx = xp.where(vx != 0, 1.0 - factor * slip / xp.where(vx != 0, vx, 1.0), xp.nan)
+    spin = xp.where(omega != 0, radius * omega, 1.0)
+    rom = xp.where(omega != 0, 1.0 - (zeta - 1.0) * factor * slip / spin, xp.nan)
     return rvx, rom
