@@ -12,7 +12,7 @@ $(PY):
 
 # Reinstall whenever the project metadata changes.
 $(STAMP): pyproject.toml | $(PY)
-	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask]'
+	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax]'
 	touch $(STAMP)
 
 demo: $(STAMP)  ## solve the documented default impact and print the report
@@ -28,6 +28,7 @@ images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80
 	$(VENV)/bin/spinimpact figures --output docs/images --dpi 80
 	$(PY) docs/scripts/convergence.py docs/images/convergence.png
+	$(PY) docs/scripts/engines.py docs/images/engines.png
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests

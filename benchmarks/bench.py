@@ -46,6 +46,26 @@ def python_rebound(vx, vy, omega, m, r, z, mu, k):
     return vx + f1 / m, -k * vy, omega + (z - 1) * f1 / (m * r)
 
 
+def engine_comparison() -> list[tuple[str, float, str, dict]]:
+    """Rows (name, time per impact, note, error summary) for the installed engines."""
+    from spinimpact import engines
+
+    cases = engines.standard_cases()
+    body = Body.solid_sphere(mass=1.0, radius=0.1)
+    rows = []
+    for label, engine, settings in engines.CONFIGURATIONS:
+        if not engines.available(engine):
+            print(f"{engine} is not installed: pip install -e '.[engines]' to compare it")
+            continue
+        run = engines.bounce(engine, body, **cases, **settings)
+        shown = ", ".join(f"{k}={v}" for k, v in run.settings.items())
+        print(f"{label}: bounce({engine!r}, ..., {shown}), {run.steps} steps")
+        worst = run.summary()["worst"]
+        note = f"error median {worst['median']:.2f}, max {worst['max']:.2f}"
+        rows.append((label, run.seconds_per_impact, note, run.summary()))
+    return rows
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--n", type=int, default=10_000_000, help="impacts in the batch")
@@ -157,6 +177,8 @@ def main() -> None:
     rows.append(("numerical integration in tau (SciPy solve_ivp)", t_ivp, ""))
 
     rows.append(sweep_row)
+    engine_rows = engine_comparison()
+    rows.extend((name, t, note) for name, t, note, _ in engine_rows)
     table = Table(title=f"spinimpact benchmarks: {n:,} impacts, float64")
     table.add_column("method")
     table.add_column(
@@ -165,8 +187,27 @@ def main() -> None:
     table.add_column("bandwidth", justify="right")
     for name, t, note in rows:
         table.add_row(name, f"{t / per:,.3g}", note)
-    console = Console()
+    console = Console(width=110)
     console.print(table)
+    if engine_rows:
+        errors = Table(
+            title="engines against the exact answer: error of the rebound "
+            "(|engine - exact| / max(|vx|, |vy|, R|omega|) before impact)"
+        )
+        errors.add_column("engine")
+        for col in ("vx+ median / max", "vy+ median / max", "R omega+ median / max", "worst p95"):
+            errors.add_column(col, justify="right")
+        for name, _, _, s in engine_rows:
+            errors.add_row(
+                name,
+                *(f"{s[k]['median']:.3f} / {s[k]['max']:.3f}" for k in ("vx", "vy", "omega")),
+                f"{s['worst']['p95']:.3f}",
+            )
+        console.print(errors)
+        console.print(
+            "engine cases: spinimpact.engines.standard_cases(), 144 impacts of a solid "
+            "sphere x 8 contact phases"
+        )
     console.print(
         f"copy bound: {copy_kind}, {moved / t_copy / 1e9:.1f} GB/s of traffic in this run; "
         f"machine: {platform.machine()}, {os.cpu_count()} cores, "

@@ -98,3 +98,63 @@ def test_dask_arrays(case_arrays):
 def test_scalars_still_give_numpy_scalars():
     assert isinstance(core.work_ratio_tangential(1.0, 3.0, 0.25, 0.5), np.floating)
     assert core.regime_code(1.0, -1.0, 3.0, 0.2, 0.5).dtype == np.int8
+
+
+@pytest.fixture(scope="module")
+def jax():
+    jax = pytest.importorskip("jax", reason="jax is not installed (the [jax] extra)")
+    jax.config.update("jax_enable_x64", True)  # float64, as NumPy computes
+    return jax
+
+
+def test_jax_arrays_eager(case_arrays, jax):
+    """Op by op (no jit), JAX performs NumPy's IEEE operations: the same bits."""
+    jnp = jax.numpy
+    expected = kernels(case_arrays)
+    got = kernels([jnp.asarray(a) for a in case_arrays])
+    for name, value in got.items():
+        for v in value if isinstance(value, tuple) else (value,):
+            assert isinstance(v, jax.Array), name  # stayed in JAX
+    compare(
+        {k: tuple(np.asarray(x) for x in flatten(v)) for k, v in got.items()},
+        {k: v if isinstance(v, tuple) else (v,) for k, v in expected.items()},
+    )
+
+
+def test_jax_jit(case_arrays, jax):
+    """Compiled by XLA, which may fuse and reorder operations: equal to rounding."""
+    vx, vy, omega, mass, radius, zeta, mu, kappa = case_arrays
+    compiled = jax.jit(core.rebound)
+    got = compiled(*(jax.numpy.asarray(a) for a in case_arrays))
+    expected = core.rebound(*case_arrays)
+    scale = np.maximum.reduce([np.abs(vx), np.abs(vy), np.abs(radius * omega)])
+    for g, e, s in zip(got, expected, (scale, scale, scale / radius, mass * scale), strict=True):
+        np.testing.assert_allclose(np.asarray(g) / s, e / s, rtol=0, atol=1e-13)
+
+
+def test_jax_gradients_are_the_closed_form_derivatives(jax):
+    """jax.grad through the kernels: in a sliding impact vx+ = vx - (1+kappa) mu |vy|
+    sign(u), so d vx+/d vx = 1 and d vx+/d omega = 0; in a sticking one
+    vx+ = vx - u/zeta, so d vx+/d vx = 1 - 1/zeta and d vx+/d omega = -R/zeta."""
+    jnp = jax.numpy
+    radius, zeta, mu, kappa = 0.1, 3.5, 0.3, 0.8
+    vx = jnp.array([3.0, 0.2, -1.0, 2.0])
+    vy = jnp.array([-1.0, -2.0, -0.5, -3.0])
+    omega = jnp.array([0.0, 5.0, -40.0, -10.0])
+
+    def vx_after(a, b, c):
+        return core.rebound(a, b, c, 1.0, radius, zeta, mu, kappa)[0]
+
+    d_vx, d_vy, d_omega = jax.vmap(jax.grad(vx_after, argnums=(0, 1, 2)))(vx, vy, omega)
+    regime = np.asarray(
+        core.regime_code(core.slip_velocity(vx, omega, radius), vy, zeta, mu, kappa)
+    )
+    slip = regime == core.REGIMES.index("slip")
+    assert slip.any() and (~slip).any()
+    u = np.asarray(vx + radius * omega)
+    np.testing.assert_allclose(np.asarray(d_vx), np.where(slip, 1.0, 1.0 - 1.0 / zeta))
+    np.testing.assert_allclose(np.asarray(d_omega), np.where(slip, 0.0, -radius / zeta), atol=1e-15)
+    # d/d vy of -(1+kappa) mu sign(u) |vy| = (1+kappa) mu sign(u); nothing when sticking
+    np.testing.assert_allclose(
+        np.asarray(d_vy), np.where(slip, (1 + kappa) * mu * np.sign(u), 0.0), atol=1e-15
+    )

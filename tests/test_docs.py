@@ -29,6 +29,8 @@ MODULES = sorted(
 @pytest.mark.parametrize("name", ["spinimpact", *MODULES])
 def test_docstring_examples(name):
     module = importlib.import_module(name)
+    for needed in getattr(module, "__doctest_requires__", ()):  # optional extras
+        pytest.importorskip(needed, reason=f"{name}'s examples need {needed}")
     result = doctest.testmod(module, optionflags=FLAGS)
     assert result.failed == 0
 
