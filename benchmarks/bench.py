@@ -61,7 +61,7 @@ def engine_comparison() -> list[tuple[str, float, str, dict]]:
         shown = ", ".join(f"{k}={v}" for k, v in run.settings.items())
         print(f"{label}: bounce({engine!r}, ..., {shown}), {run.steps} steps")
         worst = run.summary()["worst"]
-        note = f"error median {worst['median']:.2f}, max {worst['max']:.2f}"
+        note = f"error median {worst['median']:.2g}, max {worst['max']:.2g}"
         rows.append((label, run.seconds_per_impact, note, run.summary()))
     return rows
 
@@ -200,8 +200,8 @@ def main() -> None:
         for name, _, _, s in engine_rows:
             errors.add_row(
                 name,
-                *(f"{s[k]['median']:.3f} / {s[k]['max']:.3f}" for k in ("vx", "vy", "omega")),
-                f"{s['worst']['p95']:.3f}",
+                *(f"{s[k]['median']:.3g} / {s[k]['max']:.3g}" for k in ("vx", "vy", "omega")),
+                f"{s['worst']['p95']:.3g}",
             )
         console.print(errors)
         console.print(

@@ -103,8 +103,10 @@ def test_scalars_still_give_numpy_scalars():
 @pytest.fixture(scope="module")
 def jax():
     jax = pytest.importorskip("jax", reason="jax is not installed (the [jax] extra)")
+    before = jax.config.jax_enable_x64
     jax.config.update("jax_enable_x64", True)  # float64, as NumPy computes
-    return jax
+    yield jax
+    jax.config.update("jax_enable_x64", before)  # other tests see JAX as configured
 
 
 def test_jax_arrays_eager(case_arrays, jax):

@@ -16,8 +16,18 @@ vy+ -0.002 m/s, exact 0.500; error 17%
 >>> print(f"vy+ {run.vy:.3f} m/s, exact {run.exact.after.vy:.3f}; error {run.error:.0%}")
 vy+ 0.574 m/s, exact 0.500; error 2%
 
-(PyBullet at its default 240 Hz lost this bounce altogether; see
-``docs/performance.md`` for the engines over many impacts.)
+At its default settings PyBullet lost this bounce altogether (the error is
+over the incidence speed scale, here ``|vx| = 3`` m/s); with its contact margin,
+position correction and restitution threshold set to 0 it gives the exact
+answer, and a calibrated MuJoCo contact comes within a few percent (see
+``docs/performance.md`` for many impacts):
+
+>>> exact = dict(contact_breaking_threshold=0, contact_erp=0, restitution_velocity_threshold=0)
+>>> run = bounce("pybullet", ball, vx=3.0, vy=-1.0, omega=0.0, mu=0.1, kappa=0.5, **exact)
+>>> print(f"vy+ {run.vy:.3f} m/s, exact {run.exact.after.vy:.3f}")
+vy+ 0.500 m/s, exact 0.500
+>>> bool(run.error < 1e-12)
+True
 
 The engines see the body as a sphere of the body's radius with the isotropic
 inertia ``mass * gyration**2`` (so a disk or a shell bounces with its own
@@ -39,6 +49,7 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import numbers
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -60,6 +71,15 @@ __doctest_requires__ = ENGINES
 CONFIGURATIONS = (
     ("PyBullet, 240 Hz (its default)", "pybullet", {}),
     ("PyBullet, 1000 Hz", "pybullet", {"hz": 1000.0}),
+    (
+        "PyBullet, 240 Hz, exact-contact settings",
+        "pybullet",
+        {
+            "contact_breaking_threshold": 0.0,
+            "contact_erp": 0.0,
+            "restitution_velocity_threshold": 0.0,
+        },
+    ),
     ("MuJoCo, its default contact", "mujoco", {"contact": "default"}),
     ("MuJoCo, calibrated, pyramidal", "mujoco", {"friction_time": None}),
     ("MuJoCo, calibrated, elliptic + solreffriction", "mujoco", {}),
@@ -67,6 +87,7 @@ CONFIGURATIONS = (
 
 __all__ = [
     "CONFIGURATIONS",
+    "PYBULLET_DEFAULTS",
     "ENGINES",
     "EngineRun",
     "available",
@@ -77,6 +98,8 @@ __all__ = [
 
 #: Whole time steps of free flight before the step in which contact begins.
 _LEAD_STEPS = 2
+#: A calibrated MuJoCo contact's default depth of penetration, a fraction of the radius.
+_PENETRATION = 0.01
 #: How close a calibrated MuJoCo contact's head-on restitution is made to kappa.
 _KAPPA_TOLERANCE = 1e-5
 #: Time after the first contact at which the rebound is read, s.
@@ -261,32 +284,43 @@ def bounce(
 
     Notes
     -----
-    **PyBullet** (settings ``hz=240``, its default step rate, and
-    ``solver_iterations=50``, its default): the sphere's restitution is
-    ``kappa`` and lateral friction ``mu`` against a plane with both equal to 1
-    (Bullet multiplies the two bodies' values); rolling and spinning friction and
-    the bodies' velocity damping are zero. Bullet's restitution is Newton's
-    velocity ratio, which for a sphere (normal through the centre) is the same
-    as Poisson's ``kappa``.
+    **PyBullet** settings: ``hz`` (240, its default step rate),
+    ``solver_iterations`` (50), and the contact parameters
+    ``contact_breaking_threshold`` (m), ``contact_erp`` and
+    ``restitution_velocity_threshold`` (m/s), by default the values PyBullet
+    starts with (:data:`PYBULLET_DEFAULTS`). Bullet keeps some of them for the
+    whole process, so every run sets them all. The sphere's restitution is
+    ``kappa`` and its lateral friction ``mu`` against a plane with both equal to
+    1 (Bullet multiplies the two bodies' values, and caps friction at 10, so
+    ``mu <= 10``); rolling and spinning friction, velocity damping and Bullet's
+    velocity clamp (100 m/s and rad/s by default) are removed. Bullet's
+    restitution is Newton's velocity ratio, which for a body whose contact normal
+    passes through its centre is Poisson's ``kappa``; with
+    ``contact_breaking_threshold=0, contact_erp=0,
+    restitution_velocity_threshold=0`` its one-step impulse solve is the exact
+    rigid-body answer. Velocities are read 50 ms after contact.
 
     **MuJoCo** has no coefficient of restitution or hard Coulomb friction: its
     contacts are soft constraints. ``contact="calibrated"`` (the default) gives
-    each sphere a contact pair with friction ``mu`` (``condim=3``), a linear
+    each sphere a contact pair with friction ``mu`` (``condim=3``) and a linear
     spring-damper normal law (``solref`` as ``(-stiffness, -damping)``, flat
-    ``solimp`` 0.99) whose stiffness sets the head-on contact duration
-    ``contact_time`` (default 5 ms) and whose damping is calibrated, by secant
-    iterations on head-on bounces, so that the head-on restitution is ``kappa``
-    (to 1e-5, at every speed); ``kappa`` must then lie in (0, 1). Friction is a
-    velocity-damping target with time constant ``friction_time * contact_time``
-    (``solreffriction``, default 0.6, which needs the elliptic cone); with
-    ``friction_time=None`` it follows the normal ``solref`` under MuJoCo's default
-    pyramidal cone, which leaves much of the slip unresolved. Defaults:
-    ``timestep=5e-5`` (about 100 steps per contact), Newton solver, 100
-    iterations, tolerance 1e-10, ``implicitfast`` integrator. ``contact="default"``
-    is MuJoCo's own contact with only the friction set (``timestep=0.002``): its
-    restitution is fixed by the default ``solref`` whatever ``kappa`` is. Steps
-    run until every sphere has left the surface. The spin is read from the free
-    joint's body-frame angular velocity rotated to the world frame.
+    ``solimp`` 0.99). Its stiffness sets the head-on contact duration
+    ``contact_time``, by default ``0.01 pi R / max|vy|`` so the sphere sinks
+    about 1 % of its radius (the estimate is ``settings["penetration"]``); its
+    damping is calibrated, by secant iterations on head-on bounces at the
+    contact phase 0.5, so that the head-on restitution is ``kappa`` to 1e-5 at
+    any speed (other phases shift it by up to a few 1e-3); ``kappa`` must lie in
+    about [0.01, 0.99]. Friction is a velocity-damping target with time constant
+    ``friction_time * contact_time`` (``solreffriction``, default 0.6, which needs
+    the elliptic cone); with ``friction_time=None`` it follows the normal
+    ``solref`` under MuJoCo's default pyramidal cone, which leaves much of the
+    slip unresolved. ``timestep`` defaults to ``contact_time / 100``; Newton
+    solver, 100 iterations, tolerance 1e-10, ``implicitfast`` integrator.
+    ``contact="default"`` is MuJoCo's own contact with only the friction set
+    (``timestep=0.002``): its restitution is fixed by the default ``solref``
+    whatever ``kappa`` is. Steps run until every sphere has left the surface.
+    The spin is read from the free joint's body-frame angular velocity rotated
+    to the world frame.
 
     All impacts of a call share one scene (one world, bodies far apart), which
     is how an engine is run at scale; setting up the scene is a Python loop
@@ -300,6 +334,8 @@ def bounce(
         If the engine is not installed.
     """
     _check_engine(engine)
+    if not isinstance(body, Body):
+        raise ValueError(f"body must be a spinimpact.Body, got {body!r}")
     for name in ("mass", "radius", "gyration"):
         if np.ndim(getattr(body, name)) != 0:
             raise ValueError(
@@ -317,6 +353,8 @@ def bounce(
     check("phase", arrays["phase"], lambda p: (p >= 0) & (p < 1), "in [0, 1)")
     shaped = dict(zip(arrays, broadcast(**arrays), strict=True))
     shape = shaped["vx"].shape
+    if shaped["vx"].size == 0:
+        raise ValueError(f"the inputs hold no impact (broadcast shape {shape})")
     runner = {"pybullet": _pybullet, "mujoco": _mujoco}[engine]
     module = _import(engine)
     flat = {k: np.ravel(v) for k, v in shaped.items()}
@@ -326,7 +364,15 @@ def bounce(
     )
     vx_after, vy_after, omega_after = (_shaped(x, shape) for x in out)
     return EngineRun(
-        engine, used, vx_after, vy_after, omega_after, exact, shaped["phase"], steps, seconds
+        engine,
+        used,
+        vx_after,
+        vy_after,
+        omega_after,
+        exact,
+        _shaped(shaped["phase"], shape),
+        steps,
+        seconds,
     )
 
 
@@ -344,27 +390,54 @@ def _setting(settings: dict[str, Any], name: str, default: Any, ok: Any, rule: s
     return value
 
 
+def _number(settings: dict[str, Any], name: str, default: float, low: float, rule: str) -> float:
+    """A finite real setting ``> low`` (``>= low`` where ``rule`` says so)."""
+    closed = ">=" in rule
+
+    def ok(v: Any) -> bool:
+        if not isinstance(v, numbers.Real) or not math.isfinite(v):
+            return False
+        return v >= low if closed else v > low
+
+    return float(_setting(settings, name, default, ok, rule))
+
+
 def _no_more(engine: str, settings: dict[str, Any]) -> None:
     if settings:
         raise ValueError(f"unknown {engine} setting(s): {', '.join(sorted(settings))}")
 
 
+#: PyBullet 3.2.7's contact parameters in a fresh process (setting these values
+#: explicitly reproduces a fresh process's results bit for bit). Some are global to
+#: the process in Bullet, so every run sets them all.
+PYBULLET_DEFAULTS = {
+    "contact_breaking_threshold": 0.02,
+    "contact_erp": 0.08,
+    "restitution_velocity_threshold": 0.2,
+}
+
+
 def _pybullet(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     """Run the impacts in one PyBullet world; return ((vx, vy, omega), steps, s, settings)."""
     pb = module
-    hz = float(
-        _setting(
-            settings, "hz", 240.0, lambda v: isinstance(v, int | float) and v > 0, "a rate > 0 (Hz)"
-        )
-    )
+    hz = _number(settings, "hz", 240.0, 0.0, "a finite rate > 0 (Hz)")
     iterations = _setting(
         settings,
         "solver_iterations",
         50,
-        lambda v: isinstance(v, int | np.integer) and v >= 1,
+        lambda v: isinstance(v, numbers.Integral) and v >= 1,
         "a whole number >= 1",
     )
+    contact = {
+        name: _number(settings, name, default, 0.0, "a finite number >= 0")
+        for name, default in PYBULLET_DEFAULTS.items()
+    }
     _no_more("pybullet", settings)
+    if np.any(mu > 10):
+        raise ValueError(
+            f"mu must be <= 10 for PyBullet (Bullet caps the combined friction at 10), "
+            f"got {float(mu[mu > 10][0])!r}"
+        )
     dt = 1.0 / hz
     mass, radius = float(body.mass), float(body.radius)
     inertia = float(body.inertia)
@@ -373,7 +446,13 @@ def _pybullet(module, body, vx, vy, omega, mu, kappa, phase, **settings):
         kw = {"physicsClientId": client}
         pb.setGravity(0, 0, 0, **kw)
         pb.setTimeStep(dt, **kw)
-        pb.setPhysicsEngineParameter(numSolverIterations=int(iterations), **kw)
+        pb.setPhysicsEngineParameter(
+            numSolverIterations=int(iterations),
+            contactBreakingThreshold=contact["contact_breaking_threshold"],
+            contactERP=contact["contact_erp"],
+            restitutionVelocityThreshold=contact["restitution_velocity_threshold"],
+            **kw,
+        )
         plane = pb.createMultiBody(0, pb.createCollisionShape(pb.GEOM_PLANE, **kw), **kw)
         pb.changeDynamics(plane, -1, restitution=1.0, lateralFriction=1.0, **kw)
         sphere = pb.createCollisionShape(pb.GEOM_SPHERE, radius=radius, **kw)
@@ -391,6 +470,7 @@ def _pybullet(module, body, vx, vy, omega, mu, kappa, phase, **settings):
                 spinningFriction=0.0,
                 linearDamping=0.0,
                 angularDamping=0.0,
+                maxJointVelocity=1e30,  # lift Bullet's default clamp of 100 m/s and rad/s
                 localInertiaDiagonal=[inertia] * 3,
                 **kw,
             )
@@ -407,7 +487,7 @@ def _pybullet(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     finally:
         pb.disconnect(client)
     out = (state[:, 0, 0], state[:, 0, 2], -state[:, 1, 1])
-    return out, steps, seconds, {"hz": hz, "solver_iterations": int(iterations)}
+    return out, steps, seconds, {"hz": hz, "solver_iterations": int(iterations), **contact}
 
 
 def _mujoco_xml(opts, radius, mass, inertia, heights, spacing, mu, pairs) -> str:
@@ -471,7 +551,6 @@ def _mujoco_run(mj, model, vx, vy, omega, max_steps):
 def _mujoco(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     """Run the impacts in one MuJoCo model; return ((vx, vy, omega), steps, s, settings)."""
     mj = module
-    positive = (lambda v: isinstance(v, int | float) and v > 0, "a number > 0 (s)")
     contact = _setting(
         settings,
         "contact",
@@ -480,23 +559,40 @@ def _mujoco(module, body, vx, vy, omega, mu, kappa, phase, **settings):
         "'calibrated' or 'default'",
     )
     calibrated = contact == "calibrated"
-    timestep = float(_setting(settings, "timestep", 5e-5 if calibrated else 0.002, *positive))
-    used: dict[str, Any] = {"contact": contact, "timestep": timestep}
-    if calibrated:
-        contact_time = float(_setting(settings, "contact_time", 5e-3, *positive))
+    radius, mass, inertia = float(body.radius), float(body.mass), float(body.inertia)
+    if not calibrated:
+        for name in ("contact_time", "friction_time"):
+            if name in settings:
+                raise ValueError(f"{name} applies only to contact='calibrated', not 'default'")
+        timestep = _number(settings, "timestep", 0.002, 0.0, "a finite time > 0 (s)")
+        used: dict[str, Any] = {"contact": contact, "timestep": timestep}
+    else:
+        # By default the contact lasts long enough for about 100 steps but short
+        # enough that the sphere sinks about 1 % of its radius: penetration is
+        # about |vy| contact_time / pi for a linear spring.
+        speed = float(np.max(np.abs(vy)))
+        default_time = _PENETRATION * math.pi * radius / speed
+        contact_time = _number(settings, "contact_time", default_time, 0.0, "a finite time > 0 (s)")
+        timestep = _number(settings, "timestep", contact_time / 100, 0.0, "a finite time > 0 (s)")
         friction_time = _setting(
             settings,
             "friction_time",
             0.6,
-            lambda v: v is None or (isinstance(v, int | float) and v > 0),
-            "None or a fraction of the contact time > 0",
+            lambda v: v is None or (isinstance(v, numbers.Real) and 0 < v < math.inf),
+            "None or a finite fraction of the contact time > 0",
         )
         if contact_time < 20 * timestep:
             raise ValueError(
                 f"contact_time must span at least 20 time steps ({20 * timestep:g} s), "
                 f"got {contact_time!r}"
             )
-        used.update(contact_time=contact_time, friction_time=friction_time)
+        used = {
+            "contact": contact,
+            "timestep": timestep,
+            "contact_time": contact_time,
+            "friction_time": friction_time,
+            "penetration": speed * contact_time / math.pi / radius,
+        }
     _no_more("mujoco", settings)
     opts = {
         "timestep": repr(timestep),
@@ -507,7 +603,6 @@ def _mujoco(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     }
     if calibrated:
         opts.update(integrator="implicitfast", cone="elliptic" if friction_time else "pyramidal")
-    radius, mass, inertia = float(body.radius), float(body.mass), float(body.inertia)
     spacing = 4.0 * radius + 1.0
     heights = radius + np.abs(vy) * (_LEAD_STEPS + phase) * timestep
     cap = _LEAD_STEPS + 2 + int(20 * (contact_time if calibrated else 0.5) / timestep)
@@ -518,20 +613,24 @@ def _mujoco(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     stiffness = (math.pi / contact_time) ** 2  # per unit mass: the contact's duration
     friction = f' solreffriction="{friction_time * contact_time!r} 1"' if friction_time else ""
     pairs = f'solref="{-stiffness!r} -1" solimp="0.99 0.99 0.001 0.5 2"{friction}'
-    levels, which = np.unique(kappa, return_inverse=True)
-    damping = _mujoco_damping(mj, opts, radius, mass, inertia, spacing, pairs, levels, cap)
+    # Under the pyramidal cone friction enters even a head-on bounce: calibrate each
+    # (kappa, mu) pair with its own mu.
+    levels, which = np.unique(np.stack([kappa, mu], axis=1), axis=0, return_inverse=True)
+    damping = _mujoco_damping(
+        mj, opts, radius, mass, inertia, spacing, pairs, levels[:, 0], levels[:, 1], cap
+    )
     xml = _mujoco_xml(opts, radius, mass, inertia, heights, spacing, mu, pairs)
     model = mj.MjModel.from_xml_string(xml)
-    model.pair_solref[:, 1] = -damping[which]
+    model.pair_solref[:, 1] = -damping[which.ravel()]
     out, steps, seconds = _mujoco_run(mj, model, vx, vy, omega, cap)
     return out, steps, seconds, used
 
 
-def _mujoco_damping(mj, opts, radius, mass, inertia, spacing, pairs, kappa, cap):
+def _mujoco_damping(mj, opts, radius, mass, inertia, spacing, pairs, kappa, mu, cap):
     """Contact damping for which a head-on MuJoCo bounce has restitution ``kappa``.
 
-    Secant iterations on all the values of ``kappa`` at once, in one model of
-    frictionless head-on bounces, starting from the damped linear oscillator's
+    Secant iterations on all the ``(kappa, mu)`` pairs at once, in one model of
+    head-on bounces at the contact phase 0.5, starting from the damped linear oscillator's
     ``b = 2 zeta sqrt(k)`` with ``kappa = exp(-pi zeta / sqrt(1 - zeta^2))``,
     until the restitution is within ``_KAPPA_TOLERANCE`` of ``kappa`` (MuJoCo's
     solver leaves noise of a few 1e-6 in it with pyramidal friction cones).
@@ -545,7 +644,7 @@ def _mujoco_damping(mj, opts, radius, mass, inertia, spacing, pairs, kappa, cap)
     n = kappa.size
     vy = np.full(n, -1.0)
     heights = radius + (_LEAD_STEPS + 0.5) * float(opts["timestep"])
-    xml = _mujoco_xml(opts, radius, mass, inertia, np.full(n, heights), spacing, np.zeros(n), pairs)
+    xml = _mujoco_xml(opts, radius, mass, inertia, np.full(n, heights), spacing, mu, pairs)
     model = mj.MjModel.from_xml_string(xml)
     stiffness = -model.pair_solref[0, 0]
     log = np.log(kappa)
@@ -565,4 +664,8 @@ def _mujoco_damping(mj, opts, radius, mass, inertia, spacing, pairs, kappa, cap)
         b0, k0 = b1, k1
         b1 = np.maximum(b1 - step, 0.5 * b1)  # damping stays positive
         k1 = restitution(b1)
-    raise RuntimeError(f"MuJoCo damping calibration did not converge for kappa {kappa}")
+    bad = kappa[np.abs(k1 - kappa) > _KAPPA_TOLERANCE][0]
+    raise ValueError(
+        f"kappa = {float(bad)!r} cannot be reached by the calibrated MuJoCo contact "
+        f"(its damping calibration did not converge); kappa in [0.01, 0.99] can"
+    )
