@@ -58,7 +58,7 @@ def engine_comparison() -> list[tuple[str, float, str, dict]]:
             print(f"{engine} is not installed: pip install -e '.[engines]' to compare it")
             continue
         run = engines.bounce(engine, body, **cases, **settings)
-        shown = ", ".join(f"{k}={v}" for k, v in run.settings.items())
+        shown = ", ".join(f"{k}={v}" for k, v in run.settings.items() if np.ndim(v) == 0)
         print(f"{label}: bounce({engine!r}, ..., {shown}), {run.steps} steps")
         worst = run.summary()["worst"]
         note = f"error median {worst['median']:.2g}, max {worst['max']:.2g}"

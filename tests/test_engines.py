@@ -136,6 +136,10 @@ def test_mujoco_calibrated_restitution():
         default = E.bounce("mujoco", SPHERE, 0.0, vy, 0.0, mu=0.3, kappa=kappa, contact="default")
         assert np.ptp(default.vy) < 1e-9 * abs(vy)  # kappa has no effect
         assert 0 < default.vy[0] / -vy < 0.3
+    run = E.bounce("mujoco", SPHERE, 0.0, -1.0, 0.0, mu=[0.3, 0.3, 0.6], kappa=[0.5, 0.8, 0.5])
+    damping = run.settings["damping"]
+    assert damping.shape == (3,) and damping[0] > damping[1] > 0  # less restitution, more damping
+    assert run.settings["stiffness"] == pytest.approx((np.pi / run.settings["contact_time"]) ** 2)
     with pytest.raises(ValueError, match=r"kappa must be in \(0, 1\) for a calibrated"):
         E.bounce("mujoco", SPHERE, 0.0, -1.0, 0.0, mu=0.3, kappa=1.0)
     with pytest.raises(ValueError, match="contact must be 'calibrated' or 'default'"):

@@ -136,7 +136,10 @@ class EngineRun:
     engine : str
         ``"pybullet"`` or ``"mujoco"``.
     settings : Mapping
-        The engine settings used (time step, solver options, ...).
+        The engine settings used (time step, solver options, ...); for the
+        calibrated MuJoCo contact also its ``stiffness`` (1/s^2) and the flat
+        array of each impact's calibrated ``damping`` (1/s), the negated
+        ``solref`` of its contact pair.
     vx, vy, omega : ndarray
         The engine's rebound velocity and spin, in the paper's axes.
     exact : Impact
@@ -623,6 +626,9 @@ def _mujoco(module, body, vx, vy, omega, mu, kappa, phase, **settings):
     model = mj.MjModel.from_xml_string(xml)
     model.pair_solref[:, 1] = -damping[which.ravel()]
     out, steps, seconds = _mujoco_run(mj, model, vx, vy, omega, cap)
+    used["stiffness"] = stiffness
+    # the calibrated damping of each impact's pair, 1/s (solref's second entry is -damping)
+    used["damping"] = model.pair_solref[:, 1] * -1.0
     return out, steps, seconds, used
 
 
