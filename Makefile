@@ -22,7 +22,7 @@ test: $(STAMP)  ## run the whole test suite
 	$(PY) -m pytest
 
 bench: $(STAMP)  ## print benchmark ratios (not part of the tests)
-	$(PY) benchmarks/bench.py
+	$(PY) -m benchmarks.bench
 
 images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80

@@ -1,6 +1,7 @@
 """Benchmarks of spinimpact: ratios measured in one run, never absolute claims.
 
-Run with `make bench` (or `.venv/bin/python benchmarks/bench.py [--n N]`).
+Run with `make bench` (or `.venv/bin/python -m benchmarks.bench [--n N]` from the
+repository root, so that ``tests.reference`` imports without editing ``sys.path``).
 Every figure is a ratio against a baseline measured in the same run on the
 same machine: the memory-copy bound for the fused kernel, and the fused
 kernel's time per impact for everything else.
@@ -14,16 +15,13 @@ import os
 import platform
 import sys
 import time
-from pathlib import Path
 
 import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
-
-from spinimpact import Body, solve  # noqa: E402
-from spinimpact.core import fused, rebound  # noqa: E402
+from spinimpact import Body, solve
+from spinimpact.core import fused, rebound
 
 
 def best(fn, repeat: int = 7) -> float:
@@ -164,7 +162,7 @@ def main() -> None:
     sub = list(zip(vx[:k].tolist(), vy[:k].tolist(), om[:k].tolist(), strict=True))
     t_py = best(lambda: [python_rebound(a, b, c, *params) for a, b, c in sub], 3) / k
     rows.append(("pure-Python scalar loop, rebound", t_py, ""))
-    from reference import integrate_ivp
+    from tests.reference import integrate_ivp
 
     j = 30
     g = float(body.gyration)

@@ -1,9 +1,11 @@
-import sys
-from pathlib import Path
+"""Shared pytest configuration.
+
+``tests`` is a package (each folder has an ``__init__.py``), so pytest puts the
+repository root on the import path by itself and the shared helpers import as
+``tests.cases`` and ``tests.reference``; nothing edits ``sys.path``.
+"""
 
 from hypothesis import settings
-
-sys.path.insert(0, str(Path(__file__).parent))
 
 # Deterministic property tests: the same examples on every run and machine.
 settings.register_profile("repro", derandomize=True, max_examples=200, deadline=None)

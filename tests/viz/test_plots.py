@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from spinimpact import Body, solve
-from spinimpact.plots import (
+from spinimpact.viz.plots import (
     PAPER_FIGURES,
     incidence_grid,
     paper_figure,

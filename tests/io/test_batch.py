@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from spinimpact import Body, solve
-from spinimpact.batch import RESULT_COLUMNS, BatchError, run_batch
+from spinimpact.io.batch import RESULT_COLUMNS, BatchError, run_batch
 
 DEFAULTS = dict(mu=0.3, kappa=0.8, mass=1.0, radius=0.1, body="solid-sphere", gyration=None)
 
@@ -317,7 +317,7 @@ def test_parquet_nulls_skip_and_empty(tmp_path):
 
 
 def test_csv_writer_without_pyarrow_gives_the_same_values(mixed, tmp_path, monkeypatch):
-    import spinimpact.batch as batch
+    import spinimpact.io.batch as batch
 
     path, _ = mixed
     run_batch(path, tmp_path / "arrow.csv", defaults=DEFAULTS, on_error="skip", chunk_size=100)

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from spinimpact import Body, solve, solve_particle
-from spinimpact.html import _num, impact_report_html
+from spinimpact.viz.html import _num, impact_report_html
 
 pytest.importorskip("matplotlib")
 

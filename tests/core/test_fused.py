@@ -5,7 +5,7 @@ import pytest
 
 from spinimpact.core import fused, rebound
 
-from cases import random_cases
+from tests.cases import random_cases
 
 numba = pytest.importorskip("numba", reason="the [fast] extra (numba) is not installed")
 

@@ -7,7 +7,7 @@ import pytest
 import spinimpact.core as core
 from spinimpact import Body, ConstantRestitution, TabulatedRestitution, solve
 
-from cases import random_cases
+from tests.cases import random_cases
 
 
 def test_velocity_ratios_match_rebound():

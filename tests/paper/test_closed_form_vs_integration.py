@@ -7,8 +7,8 @@ import pytest
 
 from spinimpact import Body, solve
 
-from cases import REGIME_NAMES, random_cases
-from reference import integrate, integrate_ivp
+from tests.cases import REGIME_NAMES, random_cases
+from tests.reference import integrate, integrate_ivp
 
 N = 12_000
 

@@ -6,7 +6,7 @@ import pytest
 
 import spinimpact.core as core
 
-from cases import random_cases
+from tests.cases import random_cases
 
 strict = pytest.importorskip("array_api_strict", reason="array-api-strict is not installed")
 

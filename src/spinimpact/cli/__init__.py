@@ -15,9 +15,9 @@ from typing import Any
 import click
 import numpy as np
 
-from .model.body import PRESETS, Body
-from .model.impact import solve
-from .model.particle import solve_particle
+from ..model.body import PRESETS, Body
+from ..model.impact import solve
+from ..model.particle import solve_particle
 
 __all__ = ["main", "cli"]
 
@@ -162,7 +162,7 @@ def solve_command(as_json: bool, **options: Any) -> None:
     if as_json:
         click.echo(json.dumps(_jsonable(imp.to_dict()), indent=2))
     else:
-        from .report import print_report  # Rich is imported only when a report is printed
+        from ..viz.report import print_report  # Rich is imported only when a report is printed
 
         o = options
         print_report(
@@ -178,8 +178,8 @@ def solve_command(as_json: bool, **options: Any) -> None:
 def report_command(output: str, **options: Any) -> None:
     """Write one self-contained HTML page about an impact: inputs, regime, rebound,
     energy budget, works by phase, coefficients, outcome and figures."""
-    from .html import impact_report_html
-    from .io import atomic_path
+    from ..io import atomic_path
+    from ..viz.html import impact_report_html
 
     if Path(output).suffix.lower() not in (".html", ".htm"):
         raise click.UsageError(f"--output must end in .html, got {output!r}")
@@ -219,8 +219,8 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
     """Solve every row of SOURCE (CSV or Parquet): columns vx, vy, omega, and
     optionally mu, kappa, mass, radius, gyration, body per row (the options give
     the defaults). Writes the input columns plus every scalar Impact field."""
-    from ._validation import validated
-    from .batch import run_batch
+    from .._validation import validated
+    from ..io.batch import run_batch
 
     o = options
     if o["gyration"] is not None and o["body"] is not None:
@@ -280,7 +280,7 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
 def simulate_command(plot_file: str | None, **o: Any) -> None:
     """Integrate one impact in time with a compliant contact law and compare it
     with the rigid-body closed form at the law's own restitution."""
-    from .dynamics import HertzContact, HuntCrossleyContact, LinearContact, simulate
+    from ..dynamics import HertzContact, HuntCrossleyContact, LinearContact, simulate
 
     body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
     speed, target = abs(o["vy"]), o["target_kappa"]
@@ -328,12 +328,12 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
             else HuntCrossleyContact(k, o["exponent"], o["alpha"])
         )
     sim = simulate(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], contact=law, rtol=o["rtol"])
-    from .report import print_simulation
+    from ..viz.report import print_simulation
 
     print_simulation(sim)
     if plot_file:
-        from .io import atomic_path
-        from .plots import plot_simulation
+        from ..io import atomic_path
+        from ..viz.plots import plot_simulation
 
         fmt = _image_format(plot_file)
         with atomic_path(plot_file) as tmp:
@@ -383,7 +383,7 @@ def sweep_command(
 ) -> None:
     """Sweep a grid or random samples of incidence conditions in bounded memory:
     regime fractions (always), a histogram, and/or the fields written to files."""
-    from .sweep import Sweep, parse_axis, run_sweep
+    from ..io.sweep import Sweep, parse_axis, run_sweep
 
     body = _body(o["body"], o["mass"], o["radius"], o["gyration"])
     axes = {name: parse_axis(name, o[name]) for name in ("vx", "vy", "omega", "mu", "kappa")}
@@ -461,8 +461,8 @@ def map_command(output: str, extent: float, resolution: int, dpi: int, **options
     """Maps over the incidence at a fixed body, mu and kappa: regimes, rebound
     outcomes (backward, reversed spin, vertical), energy lost, mu_hat and the
     friction work ratio, with the regime boundaries drawn."""
-    from .io import atomic_path
-    from .plots import plot_map
+    from ..io import atomic_path
+    from ..viz.plots import plot_map
 
     fmt = _image_format(output)
     o = options
@@ -495,11 +495,11 @@ def figures_command(output: str, fmt: str, dpi: int) -> None:
 
     Inputs: a solid disk (m = 1 kg, R = 0.1 m, no spin) at vy = -1 m/s on a
     surface with mu = 0.25 and kappa = 0.6, and vx chosen to put each figure in
-    its regime (see spinimpact.plots.PAPER_FIGURES). Each file is written to a
+    its regime (see spinimpact.viz.plots.PAPER_FIGURES). Each file is written to a
     temporary name and renamed when complete.
     """
-    from .io import atomic_path
-    from .plots import PAPER_FIGURES, paper_figure
+    from ..io import atomic_path
+    from ..viz.plots import PAPER_FIGURES, paper_figure
 
     folder = Path(output)
     folder.mkdir(parents=True, exist_ok=True)

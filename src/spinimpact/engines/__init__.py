@@ -57,9 +57,9 @@ from typing import Any
 
 import numpy as np
 
-from ._validation import as_real_array, broadcast, check, validated
-from .model.body import Body
-from .model.impact import Impact, solve
+from .._validation import as_real_array, broadcast, check, validated
+from ..model.body import Body
+from ..model.impact import Impact, solve
 
 #: The engines this module can drive, each from the ``[engines]`` extra.
 ENGINES = ("pybullet", "mujoco")

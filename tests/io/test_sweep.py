@@ -8,7 +8,7 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.core import REGIMES
-from spinimpact.sweep import Sweep, parse_axis, run_sweep
+from spinimpact.io.sweep import Sweep, parse_axis, run_sweep
 
 BODY = Body.solid_sphere(mass=1.0, radius=0.1)
 

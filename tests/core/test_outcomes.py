@@ -7,7 +7,7 @@ import pytest
 
 from spinimpact import Body, solve
 
-from cases import random_cases
+from tests.cases import random_cases
 
 
 @pytest.fixture(scope="module")

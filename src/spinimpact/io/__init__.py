@@ -1,0 +1,11 @@
+"""Files: atomic output, batch files of incidences, sweeps over grids and samples.
+
+:func:`atomic_path` writes under a temporary name and renames only on success;
+:mod:`spinimpact.io.batch` solves every row of a CSV/Parquet file in bounded
+memory; :mod:`spinimpact.io.sweep` evaluates grids and random samples, locally
+or on a Dask cluster.
+"""
+
+from .atomic import atomic_path
+
+__all__ = ["atomic_path"]
