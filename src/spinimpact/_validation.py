@@ -1,18 +1,33 @@
-"""Input checking shared by the model and command-line layers.
+"""Input checking shared by every layer: one vocabulary for bad input.
 
 Every public entry point funnels its numbers through :func:`as_real_array`
-so that bad input fails early with a ``ValueError`` that names the parameter,
-the offending value and, for arrays, the first offending index.
+(arrays) or :func:`scalar` (single numbers), so bad input fails early:
+
+* a value of the wrong *type* (a string, ``None``, a bool, a complex number)
+  raises ``TypeError`` naming the parameter and the value;
+* a number with a bad *value* (non-finite, out of range) raises ``ValueError``
+  naming the parameter, the value and, for arrays, the first offending index;
+* a missing optional package raises ``ImportError`` naming the extra that
+  installs it (:func:`require`).
 """
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
+import math
+import numbers
 from collections.abc import Callable
+from types import ModuleType
+from typing import Any
 
 import numpy as np
 
 __all__ = [
     "as_real_array",
+    "scalar",
+    "require",
+    "available",
     "broadcast",
     "check",
     "validated",
@@ -45,7 +60,7 @@ def _value(arr: np.ndarray, mask: np.ndarray) -> str:
 
 
 def as_real_array(name: str, value: object) -> np.ndarray:
-    """Convert ``value`` to a finite float64 array or raise ``ValueError``.
+    """Convert ``value`` to a finite float64 array.
 
     Parameters
     ----------
@@ -53,10 +68,23 @@ def as_real_array(name: str, value: object) -> np.ndarray:
         Parameter name used in the error message.
     value : array_like
         Number or array of numbers.
+
+    Raises
+    ------
+    TypeError
+        If ``value`` is not a real number or an array of them (a string, ``None``,
+        a bool, a complex number, a ragged sequence).
+    ValueError
+        If an element is not finite or exceeds :data:`LARGEST` in magnitude.
     """
-    raw = np.asarray(value)
+    try:
+        raw = np.asarray(value)
+    except (ValueError, TypeError):  # ragged nested sequences
+        raise TypeError(
+            f"{name} must be a real number or array of numbers, got {value!r}"
+        ) from None
     if raw.dtype.kind not in "iuf":  # not bool, str, None, complex, object
-        raise ValueError(f"{name} must be a real number or array of numbers, got {value!r}")
+        raise TypeError(f"{name} must be a real number or array of numbers, got {value!r}")
     arr = np.array(raw, dtype=np.float64)  # a copy: later changes by the caller do not leak in
     bad = ~np.isfinite(arr)
     if bad.any():
@@ -133,3 +161,85 @@ def row_problems(name: str, values: np.ndarray) -> np.ndarray:
             for i in np.flatnonzero(bad):
                 out[i] = f"{name} must be {rule}, got {float(values[i])!r}"
     return out
+
+
+def scalar(name: str, value: object, rules_for: str | None = None, *, why: str = "") -> float:
+    """One real number: :func:`validated` (or :func:`as_real_array` when ``rules_for``
+    is ``None`` and ``name`` has no rules), then a check that it is not an array.
+
+    ``why`` completes the error for an array, e.g. ``"simulate() integrates one
+    impact at a time"``.
+    """
+    rules = rules_for or (name if name in RULES else None)
+    arr = validated(name, value, rules) if rules else as_real_array(name, value)
+    if arr.ndim:
+        reason = f": {why}" if why else ""
+        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}"
+                         f"{reason}")  # fmt: skip
+    return float(arr)
+
+
+def setting(
+    name: str, value: Any, *, low: float | None = None, closed: bool = False, rule: str = ""
+) -> float:
+    """A finite real keyword setting (a Python or NumPy number, not a bool or array),
+    optionally ``> low`` (``>= low`` with ``closed=True``); ``rule`` completes
+    "``name`` must be ..." in the error."""
+    text = rule or "a finite real number"
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be {text}, got {value!r}")
+    v = float(value)
+    if not math.isfinite(v) or (low is not None and (v < low if closed else v <= low)):
+        raise ValueError(f"{name} must be {text}, got {value!r}")
+    return v
+
+
+#: Optional extras: import name -> (distribution, extra of ``spinimpact`` that installs it).
+EXTRAS: dict[str, tuple[str, str]] = {
+    "numba": ("numba", "fast"),
+    "pyarrow": ("pyarrow", "parquet"),
+    "dask": ("dask", "dask"),
+    "distributed": ("distributed", "dask"),
+    "pybullet": ("pybullet", "engines"),
+    "mujoco": ("mujoco", "engines"),
+    "jax": ("jax", "jax"),
+}
+
+
+def available(module: str) -> bool:
+    """Whether the optional ``module`` (e.g. ``"numba"``, ``"pyarrow.parquet"``) can be
+    imported, without importing it."""
+    try:
+        return importlib.util.find_spec(module.split(".")[0]) is not None
+    except (ImportError, ValueError):
+        return False
+
+
+def require(module: str, purpose: str) -> ModuleType:
+    """Import the optional ``module`` or raise ``ImportError`` naming the extra.
+
+    Parameters
+    ----------
+    module : str
+        Import name, e.g. ``"pyarrow.parquet"``; its top-level package must be a key
+        of :data:`EXTRAS`.
+    purpose : str
+        What needs it, completing "``purpose`` needs ...", e.g. ``"Parquet files"``.
+
+    Raises
+    ------
+    ImportError
+        If the package is missing; the message names ``pip install
+        'spinimpact[EXTRA]'``.
+    """
+    top = module.split(".")[0]
+    if top not in EXTRAS:
+        raise KeyError(f"{top} is not an optional dependency of spinimpact")
+    dist, extra = EXTRAS[top]
+    try:
+        return importlib.import_module(module)
+    except ImportError as err:
+        raise ImportError(
+            f"{purpose} needs {dist}, which is not installed: pip install 'spinimpact[{extra}]'",
+            name=top,
+        ) from err

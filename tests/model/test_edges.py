@@ -38,21 +38,23 @@ def test_every_result_agrees_on_stick_or_slip_at_exact_boundaries():
 
 
 @pytest.mark.parametrize(
-    ("kwargs", "message"),
+    ("kwargs", "error", "message"),
     [
-        (dict(vy=-1e-200), "vy must be <= -1e-50"),
-        (dict(vx=1e160), "vx must be at most 1e+50 in magnitude"),
-        (dict(mu=1e300), "mu must be at most 1e+50"),
-        (dict(vx=True), "vx must be a real number"),
-        (dict(vx="3"), "vx must be a real number"),
-        (dict(omega=None), "omega must be a real number"),
-        (dict(vx=np.array([1 + 2j])), "vx must be a real number"),
+        (dict(vy=-1e-200), ValueError, "vy must be <= -1e-50"),
+        (dict(vx=1e160), ValueError, "vx must be at most 1e+50 in magnitude"),
+        (dict(mu=1e300), ValueError, "mu must be at most 1e+50"),
+        # a value of the wrong type is a TypeError, a bad number a ValueError
+        (dict(vx=True), TypeError, "vx must be a real number"),
+        (dict(vx="3"), TypeError, "vx must be a real number"),
+        (dict(omega=None), TypeError, "omega must be a real number"),
+        (dict(vx=np.array([1 + 2j])), TypeError, "vx must be a real number"),
+        (dict(vx=[[1.0], [1.0, 2.0]]), TypeError, "vx must be a real number"),
     ],
 )
-def test_extreme_or_odd_inputs_are_rejected_by_name(kwargs, message):
+def test_extreme_or_odd_inputs_are_rejected_by_name(kwargs, error, message):
     args = dict(vx=1.0, vy=-1.0, omega=0.0, mu=0.3, kappa=0.5) | kwargs
     body = Body.solid_disk(mass=1.0, radius=0.1)
-    with pytest.raises(ValueError, match=re.escape(message)):
+    with pytest.raises(error, match=re.escape(message)):
         solve(body, args.pop("vx"), args.pop("vy"), args.pop("omega"), **args)
 
 

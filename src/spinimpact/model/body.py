@@ -87,6 +87,19 @@ class Body:
     def zeta(self) -> float | np.ndarray:
         return self._zeta  # type: ignore[return-value]
 
+    #: The body's flat column names in results (:meth:`columns`).
+    COLUMNS = ("mass", "radius", "gyration", "zeta")
+
+    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
+        """``mass, radius, gyration, zeta`` broadcast to ``shape`` (a result's columns)."""
+        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
+
+    def to_dict(self) -> dict[str, object]:
+        """Name, mass, radius, gyration and zeta as plain Python values."""
+        out: dict[str, object] = {"name": self.name}
+        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
+        return out
+
     @property
     def inertia(self) -> float | np.ndarray:
         return self.mass * self.gyration**2

@@ -10,59 +10,19 @@ import numpy as np
 
 from .. import core
 from .._validation import as_real_array, broadcast, check, validated
+from . import result
 from .body import Body
+from .result import Result, freeze
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
 
-Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give arrays
-
-
-def _out(x: np.ndarray) -> Array:
-    """NumPy scalar for 0-d results, a read-only array otherwise (results are frozen)."""
-    arr = np.array(x)
-    arr.setflags(write=False)
-    return arr[()]
-
-
-class _Indexable:
-    """Mixin: ``obj[i]`` indexes every array field (the impacts) at ``i``."""
-
-    def __getitem__(self, index: Any) -> Any:
-        values = {}
-        for f in fields(self):  # type: ignore[arg-type]
-            v = getattr(self, f.name)
-            if isinstance(v, _Indexable):
-                values[f.name] = v[index]
-            elif isinstance(v, np.ndarray | np.generic):
-                values[f.name] = _out(np.asarray(v)[index])
-            else:
-                values[f.name] = v
-        return type(self)(**values)
-
-    def to_dict(self) -> dict[str, Any]:
-        """Fields as plain Python values (floats, str, bool, nested dicts, lists)."""
-        out: dict[str, Any] = {}
-        for f in fields(self):  # type: ignore[arg-type]
-            v = getattr(self, f.name)
-            if isinstance(v, _Indexable):
-                out[f.name] = v.to_dict()
-            elif isinstance(v, np.ndarray | np.generic):
-                out[f.name] = np.asarray(v).tolist()
-            elif isinstance(v, Body):
-                out[f.name] = {
-                    "name": v.name,
-                    "mass": np.asarray(v.mass).tolist(),
-                    "radius": np.asarray(v.radius).tolist(),
-                    "gyration": np.asarray(v.gyration).tolist(),
-                    "zeta": np.asarray(v.zeta).tolist(),
-                }
-            else:
-                out[f.name] = v
-        return out
+Array = result.Array
+_out = freeze  # the old private name, kept for the modules that import it
+_Indexable = Result
 
 
 @dataclass(frozen=True, eq=False)
-class State(_Indexable):
+class State(Result):
     """Velocity state of the body: centre velocity ``(vx, vy)`` in m/s and spin
     ``omega`` in rad/s (counter-clockwise positive)."""
 
@@ -72,7 +32,7 @@ class State(_Indexable):
 
 
 @dataclass(frozen=True, eq=False)
-class Outcome(_Indexable):
+class Outcome(Result):
     """Qualitative rebound outcome, decided from the incidence by the closed-form
     conditions of :mod:`spinimpact.core.outcomes`.
 
@@ -90,6 +50,8 @@ class Outcome(_Indexable):
         The contact point leaves without slip, ``u^+ = 0`` (the contact stuck).
     """
 
+    _column_prefix = False  # the flags keep their names as columns: backward, rolling, ...
+
     backward: Array
     reversed_spin: Array
     vertical: Array
@@ -98,7 +60,7 @@ class Outcome(_Indexable):
 
 
 @dataclass(frozen=True, eq=False)
-class History:
+class History(Result):
     """The impact process of one impact, sampled over the normal impulse ``tau``.
 
     Every array has the length of ``tau``. ``tau0``, ``tau_star`` and ``tau1``
@@ -117,9 +79,12 @@ class History:
     tau_star: float
     tau1: float
 
+    _per_impact = False  # one impact over tau: not indexable by impact
+    _shape_field = "tau"
+
 
 @dataclass(frozen=True, eq=False)
-class Impact(_Indexable):
+class Impact(Result):
     """Everything :func:`solve` computes about an impact (or an array of impacts).
 
     Each numeric field has the broadcast shape of the inputs (a NumPy scalar for
@@ -145,6 +110,8 @@ class Impact(_Indexable):
     impulse_ratio : ``mu_hat = f_1/tau_1`` (eqs. 7.4, 7.7-7.9).
     kinetic_energy_before, kinetic_energy_after, dissipated_energy : ``E^-``, ``E^+``
         and ``Delta E = E^- - E^+ >= 0`` (eqs. 5.1-5.10).
+    dissipated_fraction : ``Delta E / E^-``, the share of the incidence energy lost,
+        in ``[0, 1]``.
     work_compression_normal, work_compression_tangential,
     work_restitution_normal, work_restitution_tangential :
         ``W_c^n, W_c^t, W_r^n, W_r^t`` (eqs. 6.1-6.11).
@@ -176,6 +143,7 @@ class Impact(_Indexable):
     kinetic_energy_before: Array
     kinetic_energy_after: Array
     dissipated_energy: Array
+    dissipated_fraction: Array
     work_compression_normal: Array
     work_compression_tangential: Array
     work_restitution_normal: Array
@@ -189,18 +157,7 @@ class Impact(_Indexable):
     energetic_restitution: Array
     outcome: Outcome
 
-    @property
-    def shape(self) -> tuple[int, ...]:
-        """Broadcast shape of the impacts (``()`` for a single impact)."""
-        return np.shape(self.tau1)
-
-    def __len__(self) -> int:
-        if self.shape == ():
-            raise TypeError("len() of a single impact")
-        return self.shape[0]
-
-    def __iter__(self):  # type: ignore[no-untyped-def]
-        return (self[i] for i in range(len(self)))
+    _shape_field = "tau1"
 
     def __getitem__(self, index: Any) -> Impact:
         imp = super().__getitem__(index)
@@ -325,6 +282,9 @@ def solve(
 
     Raises
     ------
+    TypeError
+        For a ``body`` that is not a :class:`Body`, or an input that is not a real
+        number or array of them.
     ValueError
         For non-finite input, ``vy >= 0``, ``mu < 0``, ``kappa`` outside
         ``[0, 1]``, or shapes that do not broadcast; the message names the
@@ -339,7 +299,7 @@ def solve(
     ('stick-compression', 0.714285714286)
     """
     if not isinstance(body, Body):
-        raise ValueError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     vx_, vy_, om_, mu_ = (
         validated(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
@@ -363,6 +323,7 @@ def solve(
     tau0 = core.compression_impulse(m, vy_)
     tau1 = core.total_impulse(m, vy_, kappa_)
     e0 = core.kinetic_energy(vx_, vy_, om_, m, inertia)
+    loss = core.dissipated_energy(*inc)
     wcn, wct, wrn, wrt = core.phase_works(*inc)
     tau_m = core.min_energy_impulse(*inc)
     flags = core.rebound_outcomes(vx_, vy_, om_, r, zeta, mu_, kappa_)
@@ -384,7 +345,8 @@ def solve(
         impulse_ratio=_out(core.impulse_ratio(slip, vy_, zeta, mu_, kappa_)),
         kinetic_energy_before=_out(e0),
         kinetic_energy_after=_out(core.kinetic_energy(vx1, vy1, om1, m, inertia)),
-        dissipated_energy=_out(core.dissipated_energy(*inc)),
+        dissipated_energy=_out(loss),
+        dissipated_fraction=_out(loss / e0),
         work_compression_normal=_out(wcn),
         work_compression_tangential=_out(wct),
         work_restitution_normal=_out(wrn),

@@ -13,13 +13,15 @@ import numpy as np
 
 from .. import core
 from .._validation import as_real_array, broadcast, check
-from .impact import Array, State, _Indexable, _out, _restitution
+from .impact import State, _restitution
+from .result import Array, Result
+from .result import freeze as _out
 
 __all__ = ["ParticleImpact", "solve_particle"]
 
 
 @dataclass(frozen=True, eq=False)
-class ParticleImpact(_Indexable):
+class ParticleImpact(Result):
     """Result of :func:`solve_particle`.
 
     Attributes

@@ -1,0 +1,152 @@
+"""One result vocabulary: the base every result object of the package shares.
+
+A result is a frozen dataclass whose fields are named in words. Numeric fields
+hold NumPy scalars for one impact or read-only arrays of one broadcast shape for
+many; nested results (the velocity states, the outcome flags) are results too.
+The base gives them all the same behaviour:
+
+* ``shape``, ``len()``, iteration and ``result[i]`` over the impacts;
+* ``to_dict()``: plain Python values (floats, lists, str, bool, nested dicts), for JSON;
+* ``columns()``: flat named columns, one array per column, for files and tables
+  (``after`` of :class:`~spinimpact.Impact` becomes ``after_vx, after_vy,
+  after_omega``); :meth:`Result.column_names` lists them without computing anything.
+
+Batch files and sweeps take their column names from here, so a field is named
+once, where it is defined.
+"""
+
+from __future__ import annotations
+
+import typing
+from dataclasses import dataclass, fields
+from typing import Any, ClassVar
+
+import numpy as np
+
+__all__ = ["Result", "freeze"]
+
+Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give arrays
+
+
+def freeze(x: Any) -> Array:
+    """NumPy scalar for 0-d results, a read-only array otherwise (results are frozen)."""
+    arr = np.array(x)
+    arr.setflags(write=False)
+    return arr[()]
+
+
+@dataclass(frozen=True, eq=False)
+class Result:
+    """Base of the package's result objects (a frozen dataclass of named fields).
+
+    Subclasses are frozen dataclasses. Class attributes tune the flat columns:
+
+    ``_shape_field``
+        The field whose shape is the shape of the result (default: the broadcast
+        shape of every array field).
+    ``_column_prefix``
+        ``True`` (default): a nested result's columns are prefixed with the
+        field's name (``after_vx``); ``False``: they keep their own names
+        (the outcome flags ``backward``, ``rolling``, ...).
+    ``_per_impact``
+        Whether each array field holds one value per impact, so that
+        ``result[i]`` may index every array field. Results of one impact over
+        time (a history) set it to ``False``.
+    """
+
+    _shape_field: ClassVar[str | None] = None
+    _column_prefix: ClassVar[bool] = True
+    _per_impact: ClassVar[bool] = True
+
+    # -- the impacts ---------------------------------------------------------------
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Broadcast shape of the impacts (``()`` for a single impact)."""
+        if self._shape_field is not None:
+            return np.shape(getattr(self, self._shape_field))
+        shapes = [np.shape(v) for _, v in self._items() if _is_array(v)]
+        shapes += [v.shape for _, v in self._items() if isinstance(v, Result)]
+        return np.broadcast_shapes(*shapes) if shapes else ()
+
+    def __len__(self) -> int:
+        if self.shape == ():
+            raise TypeError(f"len() of a single impact (a {type(self).__name__} of shape ())")
+        return self.shape[0]
+
+    def __iter__(self):  # type: ignore[no-untyped-def]
+        return (self[i] for i in range(len(self)))
+
+    def __getitem__(self, index: Any) -> Any:
+        if not self._per_impact:
+            raise TypeError(f"a {type(self).__name__} describes one impact; it is not indexable")
+        values = {}
+        for name, v in self._items():
+            if isinstance(v, Result):
+                values[name] = v[index]
+            elif _is_array(v):
+                values[name] = freeze(np.asarray(v)[index])
+            else:
+                values[name] = v
+        return type(self)(**values)
+
+    # -- plain values and flat columns ------------------------------------------------
+    def to_dict(self) -> dict[str, Any]:
+        """Fields as plain Python values (floats, str, bool, nested dicts, lists)."""
+        out: dict[str, Any] = {}
+        for name, v in self._items():
+            if isinstance(v, Result):
+                out[name] = v.to_dict()
+            elif _is_array(v):
+                out[name] = np.asarray(v).tolist()
+            elif hasattr(v, "to_dict"):
+                out[name] = v.to_dict()
+            else:
+                out[name] = v
+        return out
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """Every per-impact quantity as a flat named column of the result's shape.
+
+        Nested results are flattened (``after_vx``; the outcome flags keep their
+        names); objects with a ``columns(shape)`` method (a :class:`~spinimpact.Body`)
+        contribute theirs. Non-numeric, non-per-impact fields are left out.
+        """
+        shape = self.shape
+        out: dict[str, np.ndarray] = {}
+        for name, v in self._items():
+            if isinstance(v, Result):
+                prefix = f"{name}_" if v._column_prefix else ""
+                out.update({prefix + k: c for k, c in v.columns().items()})
+            elif _is_array(v):
+                out[name] = np.broadcast_to(np.asarray(v), shape)
+            elif hasattr(v, "columns"):
+                out.update(v.columns(shape))
+        return out
+
+    @classmethod
+    def column_names(cls) -> tuple[str, ...]:
+        """Names of :meth:`columns`, in order, from the field declarations alone.
+
+        Read from the field annotations: a nested :class:`Result` contributes its
+        own names, a type with a ``COLUMNS`` tuple (:class:`~spinimpact.Body`)
+        those, and a field annotated ``Array`` (or ``np.ndarray``) its own name.
+        """
+        hints = typing.get_type_hints(cls)
+        names: list[str] = []
+        for f in fields(cls):  # type: ignore[arg-type]
+            kind = hints[f.name]
+            if isinstance(kind, type) and issubclass(kind, Result):
+                prefix = f"{f.name}_" if kind._column_prefix else ""
+                names += [prefix + n for n in kind.column_names()]
+            elif isinstance(kind, type) and hasattr(kind, "COLUMNS"):
+                names += list(kind.COLUMNS)
+            elif kind is Array or kind is np.ndarray:
+                names.append(f.name)
+        return tuple(names)
+
+    def _items(self):  # type: ignore[no-untyped-def]
+        return ((f.name, getattr(self, f.name)) for f in fields(self))  # type: ignore[arg-type]
+
+
+def _is_array(v: Any) -> bool:
+    return isinstance(v, np.ndarray | np.generic)
