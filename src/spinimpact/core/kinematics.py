@@ -1,7 +1,23 @@
-"""Impulses, regimes and rebound velocities (paper sections 2-4 and 7).
+"""The paper's bodies on a fixed plane: body velocities in, body velocities out
+(paper sections 2-4 and 7).
 
-All functions are pure NumPy kernels: arrays in, arrays out, broadcasting
-over any number of impacts, no validation (the model layer validates).
+A disk, ring, sphere, shell or spool of mass ``m``, contact radius ``R`` and
+radius of gyration ``rho`` touches the plane straight below its centre, at
+``r = (0, -R)``. Its contact point moves with the slip ``u = vx + R omega``
+(eq. 4.4) and the normal velocity ``vy``, and its collision matrix is
+``W = diag(zeta/m, 1/m)`` with ``zeta = 1 + R^2/rho^2``
+(:func:`~spinimpact.core.impulse.planar_collision_matrix` with ``r = (0, -R)``).
+So the contact seam :mod:`spinimpact.core.impulse` takes ``(slip, vy, m, zeta)``
+directly, and this module only maps body velocities to the contact point and
+the contact impulse back to the body:
+
+.. math::
+
+    v_x^+ = v_x^- + f/m, \\qquad v_y^+ = -\\kappa v_y^-, \\qquad
+    \\omega^+ = \\omega^- + R f/J = \\omega^- + (\\zeta - 1) f/(m R).
+
+The contact-level kernels are re-exported here under their historical names
+(``spinimpact.core.kinematics.sticks`` is :func:`spinimpact.core.impulse.sticks`).
 
 Notation (SI units)
 -------------------
@@ -12,16 +28,45 @@ Notation (SI units)
     Mass ``m``, contact radius ``R`` and ``zeta = 1 + R**2/rho**2``.
 ``mu, kappa``
     Kinetic Coulomb friction coefficient and coefficient of normal restitution.
-``slip``
-    Horizontal velocity of the contact point, ``u = vx + R*omega`` (eq. 4.4).
+
+References
+----------
+.. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a
+   fixed surface", Proceedings of the Section of Natural Sciences, Montenegrin
+   Academy of Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
+.. [2] J. B. Keller, "Impact with friction", Journal of Applied Mechanics 53 (1986) 1-4.
 """
 
 from __future__ import annotations
 
-from ._xp import arrays, quiet
+from typing import Any, NamedTuple
+
+from ._xp import arrays
+from .impulse import (
+    REGIMES,
+    compression_impulse,
+    force_ratio_at,
+    friction_impulse_at,
+    impulse_ratio,
+    incidence_ratio,
+    rebound_normal_velocity,
+    rebound_slip,
+    regime_code,
+    regime_thresholds,
+    restitution_coefficients,
+    slip_at,
+    stick_impulse,
+    sticks,
+    sticks_in_compression,
+    tangential_impulse,
+    total_impulse,
+)
 
 __all__ = [
     "REGIMES",
+    "Rebound",
+    "Velocities",
+    "VelocityRatios",
     "slip_velocity",
     "incidence_ratio",
     "compression_impulse",
@@ -43,129 +88,34 @@ __all__ = [
     "velocity_ratios",
 ]
 
-#: Names of the impact regimes, indexed by the codes of :func:`regime_code`.
-REGIMES = ("frictionless", "no-slip", "stick-compression", "stick-restitution", "slip")
+
+class Velocities(NamedTuple):
+    """Velocity state of a body in plane motion."""
+
+    vx: Any  #: centre velocity along the surface, m/s
+    vy: Any  #: centre velocity along the normal, m/s
+    omega: Any  #: spin, rad/s, counter-clockwise positive
+
+
+class Rebound(NamedTuple):
+    """Rebound velocities and the friction impulse of :func:`rebound`."""
+
+    vx: Any  #: ``vx^+``, m/s
+    vy: Any  #: ``vy^+``, m/s
+    omega: Any  #: ``omega^+``, rad/s
+    tangential_impulse: Any  #: ``f_1``, N s
+
+
+class VelocityRatios(NamedTuple):
+    """``vx^+/vx^-`` and ``omega^+/omega^-`` (NaN where the incidence component is 0)."""
+
+    vx: Any
+    omega: Any
 
 
 def slip_velocity(vx, omega, radius):
     """Horizontal velocity of the contact point, ``u = u_C + R*omega`` (eq. 4.4)."""
     return vx + radius * omega
-
-
-def incidence_ratio(slip, vy):
-    """The incidence ratio ``|u^-/v^-|`` that selects the regime (eqs. 4.6, 4.14, 4.15)."""
-    xp, (slip, vy) = arrays(slip, vy)
-    return xp.abs(slip) / xp.abs(vy)
-
-
-def compression_impulse(mass, vy):
-    """Normal impulse at the end of compression, ``tau_0 = -m v^-`` (eq. 3.2)."""
-    return -mass * vy
-
-
-def total_impulse(mass, vy, kappa):
-    """Total normal impulse, ``tau_1 = (1 + kappa) tau_0`` (eq. 3.6).
-
-    Poisson's restitution ``(tau_1 - tau_0)/tau_0 = kappa`` (eq. 1.2) fixes the end
-    of the impact.
-    """
-    return (1.0 + kappa) * compression_impulse(mass, vy)
-
-
-def stick_impulse(mass, slip, zeta, mu):
-    """Normal impulse at which the contact point stops slipping (eq. 4.3).
-
-    ``tau_* = m |u^-| / (zeta mu)``, from integrating ``m du = zeta (F/N) dtau``
-    (eq. 4.1) with ``F/N = -mu sign(u^-)`` until ``u = 0``.
-
-    Returns ``0`` where ``u^- = 0`` (there is no slip to end, whatever ``mu``) and
-    ``+inf`` where ``mu = 0`` and ``u^- != 0`` (a frictionless contact never sticks).
-    """
-    xp, (mass, slip, zeta, mu) = arrays(mass, slip, zeta, mu)
-    num = mass * xp.abs(slip)
-    den = zeta * mu
-    with quiet(xp, divide="ignore", invalid="ignore", over="ignore"):  # tiny mu: tau_* -> inf
-        tau = xp.where(den > 0, num / xp.where(den > 0, den, 1.0), xp.inf)
-    return xp.where(num == 0, 0.0, tau)
-
-
-def sticks(slip, vy, zeta, mu, kappa):
-    """True where the slip stops before the impact ends, ``tau_* <= tau_1`` (eq. 4.6).
-
-    Evaluated as ``|u^-| <= (1 + kappa) zeta mu |v^-|``, free of the mass and of
-    divisions. This one comparison decides stick versus slip for every result
-    (regime, rebound, ``u^+``, outcome flags), so they never disagree at the
-    boundary, where the two closed forms coincide anyway.
-    """
-    xp, (slip, vy) = arrays(slip, vy)
-    return xp.abs(slip) <= (1.0 + kappa) * zeta * mu * xp.abs(vy)
-
-
-def sticks_in_compression(slip, vy, zeta, mu):
-    """True where the slip stops by the end of compression, ``tau_* <= tau_0`` (eq. 4.14).
-
-    Evaluated as ``|u^-| <= zeta mu |v^-|``.
-    """
-    xp, (slip, vy) = arrays(slip, vy)
-    return xp.abs(slip) <= zeta * mu * xp.abs(vy)
-
-
-def regime_code(slip, vy, zeta, mu, kappa):
-    """Integer code of the impact regime; ``REGIMES[code]`` names it.
-
-    ===  =====================  ==============================================
-    0    ``frictionless``       ``mu = 0``
-    1    ``no-slip``            ``u^- = 0`` (and ``mu > 0``)
-    2    ``stick-compression``  ``tau_* <= tau_0``, i.e. ``|u^-/v^-| <= zeta mu`` (eq. 4.14)
-    3    ``stick-restitution``  ``tau_0 < tau_* <= tau_1`` (eqs. 4.6, 4.14)
-    4    ``slip``               ``tau_* > tau_1``, i.e. ``|u^-/v^-| > (1+kappa) zeta mu`` (eq. 4.15)
-    ===  =====================  ==============================================
-    """
-    xp, (slip, vy, mu) = arrays(slip, vy, mu)
-    early = xp.astype(sticks_in_compression(slip, vy, zeta, mu), xp.int8)
-    stick = xp.astype(sticks(slip, vy, zeta, mu, kappa), xp.int8)
-    code = 4 - stick - early  # 2, 3 or 4: early sticking implies sticking
-    code = xp.where(slip == 0, xp.asarray(1, dtype=xp.int8), code)
-    return xp.where(mu == 0, xp.asarray(0, dtype=xp.int8), code)
-
-
-def regime_thresholds(zeta, mu, kappa):
-    """Incidence ratios ``|u^-/v^-|`` that bound the regimes: ``zeta mu`` (eq. 4.14)
-    and ``(1 + kappa) zeta mu`` (eqs. 4.6, 4.15)."""
-    return zeta * mu, (1.0 + kappa) * zeta * mu
-
-
-def friction_impulse_at(tau, mass, slip, zeta, mu):
-    """Friction impulse ``f(tau)`` accumulated up to normal impulse ``tau`` (eqs. 7.1-7.3).
-
-    ``f = -mu sign(u^-) tau`` while slipping (``tau < tau_*``) and
-    ``f = -mu sign(u^-) tau_* = -m u^-/zeta`` afterwards, the last form being the
-    exact value of ``mu tau_*`` (eq. 4.3), independent of ``mu``. This is Routh's
-    impact diagram (Fig. 4).
-    """
-    xp, (tau, slip, mu) = arrays(tau, slip, mu)
-    tau_star = stick_impulse(mass, slip, zeta, mu)
-    return xp.where(tau >= tau_star, -mass * slip / zeta, -mu * xp.sign(slip) * tau) + 0.0
-
-
-def force_ratio_at(tau, mass, slip, zeta, mu):
-    """Force ratio ``F/N`` at normal impulse ``tau`` (eq. 6.4, Figs. 2a and 3a).
-
-    ``-mu sign(u^-)`` while slipping, ``0`` once the contact point sticks.
-    """
-    xp, (tau, slip, mu) = arrays(tau, slip, mu)
-    tau_star = stick_impulse(mass, slip, zeta, mu)
-    return xp.where(tau < tau_star, -mu * xp.sign(slip), 0.0) + 0.0
-
-
-def slip_at(tau, mass, slip, zeta, mu):
-    """Slip velocity ``u(tau)`` of the contact point (eqs. 4.2, 4.5, 4.12).
-
-    ``u = u^- - zeta mu sign(u^-) tau/m`` up to ``tau_*``, exactly ``0`` after.
-    """
-    xp, (tau, slip, mu) = arrays(tau, slip, mu)
-    tau_star = stick_impulse(mass, slip, zeta, mu)
-    return xp.where(tau >= tau_star, 0.0, slip - zeta * mu * xp.sign(slip) * tau / mass) + 0.0
 
 
 def state_at(tau, vx, vy, omega, mass, radius, zeta, mu):
@@ -176,30 +126,7 @@ def state_at(tau, vx, vy, omega, mass, radius, zeta, mu):
     (eq. 4.7, 4.9), with ``f = f(tau)`` of :func:`friction_impulse_at`.
     """
     f = friction_impulse_at(tau, mass, slip_velocity(vx, omega, radius), zeta, mu)
-    return vx + f / mass, vy + tau / mass, omega + (zeta - 1.0) * f / (mass * radius)
-
-
-def tangential_impulse(mass, slip, vy, zeta, mu, kappa):
-    """Total friction impulse ``f_1 = -mu sign(u^-) min(tau_*, tau_1)`` (eqs. 5.7, 7.6).
-
-    When the contact sticks, ``mu tau_*`` is evaluated exactly as ``m |u^-|/zeta``
-    (eq. 4.3), independent of ``mu``.
-    """
-    xp, (slip, vy) = arrays(slip, vy)
-    stick = sticks(slip, vy, zeta, mu, kappa)
-    slide = -mu * xp.sign(slip) * total_impulse(mass, vy, kappa)
-    return xp.where(stick, -mass * slip / zeta, slide) + 0.0
-
-
-def rebound_slip(slip, vy, zeta, mu, kappa):
-    """Rebound slip velocity of the contact point ``u^+`` (eq. 7.11).
-
-    ``0`` when the contact sticks; ``u^- - sign(u^-) (1+kappa) zeta mu |v^-|``,
-    i.e. ``u^- (1 - (1+kappa) zeta mu/|u^-/v^-|)``, when it slips throughout.
-    """
-    xp, (slip, vy) = arrays(slip, vy)
-    stick = sticks(slip, vy, zeta, mu, kappa)
-    return xp.where(stick, 0.0, slip - xp.sign(slip) * (1.0 + kappa) * zeta * mu * xp.abs(vy)) + 0.0
+    return Velocities(vx + f / mass, vy + tau / mass, omega + (zeta - 1.0) * f / (mass * radius))
 
 
 def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
@@ -213,51 +140,14 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa):
 
     Returns
     -------
-    vx_after, vy_after, omega_after, f1 : ndarray
+    Rebound
+        Named tuple ``(vx, vy, omega, tangential_impulse)``; it unpacks as before,
+        ``vx1, vy1, om1, f1 = rebound(...)``.
     """
     f1 = tangential_impulse(mass, slip_velocity(vx, omega, radius), vy, zeta, mu, kappa)
     vx_after = vx + f1 / mass
     omega_after = omega + (zeta - 1.0) * f1 / (mass * radius)
-    return vx_after, -kappa * vy + 0.0, omega_after, f1
-
-
-def restitution_coefficients(mass, vy, vy_after, work_compression_normal, work_restitution_normal):
-    """Newton's, Poisson's and Stronge's restitution, each from its own definition.
-
-    ``kappa_N = -v^+/v^-`` (eq. 1.1); ``kappa_P = (tau_1 - tau_0)/tau_0`` (eq. 1.2)
-    with ``tau_0 = -m v^-`` where ``v(tau)`` vanishes (eq. 3.2) and the total
-    impulse ``tau_1 = m (v^+ - v^-)`` (eq. 2.2); ``eta = sqrt(-W_r^n/W_c^n)``
-    (eq. 1.3). For the disk all three equal ``kappa`` (eqs. 3.4, 3.5, 6.5).
-    """
-    tau0 = compression_impulse(mass, vy)
-    tau1 = mass * (vy_after - vy)
-    eta2 = -work_restitution_normal / work_compression_normal
-    xp, (eta2,) = arrays(eta2)
-    return -vy_after / vy, (tau1 - tau0) / tau0, xp.sqrt(xp.maximum(eta2, 0.0))
-
-
-def impulse_ratio(slip, vy, zeta, mu, kappa):
-    """Tangential impact coefficient ``mu_hat = f_1 / tau_1`` (eqs. 7.4, 7.7-7.9).
-
-    Notes
-    -----
-    .. math::
-
-        \\hat\\mu = \\begin{cases}
-            \\dfrac{1}{(1+\\kappa)\\zeta}\\dfrac{u^-}{v^-}, & |u^-/v^-| \\le (1+\\kappa)\\zeta\\mu
-                \\quad (7.8)\\\\
-            -\\mu\\,\\mathrm{sign}(u^-), & |u^-/v^-| \\ge (1+\\kappa)\\zeta\\mu \\quad (7.9)
-        \\end{cases}
-
-    Both cases are the single identity
-    ``mu_hat = (u^+ - u^-) / ((1 + kappa) zeta |v^-|)`` that follows from eqs.
-    (2.1)-(2.3). The paper's printed common form (7.10),
-    ``-mu |u^-| / (u^- - u^+)``, swaps the two cases and is wrong; see
-    ``docs/errata.md``.
-    """
-    xp, (slip, vy) = arrays(slip, vy)
-    stick = sticks(slip, vy, zeta, mu, kappa)
-    return xp.where(stick, slip / ((1.0 + kappa) * zeta * vy), -mu * xp.sign(slip)) + 0.0
+    return Rebound(vx_after, rebound_normal_velocity(vy, kappa), omega_after, f1)
 
 
 def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
@@ -288,4 +178,4 @@ def velocity_ratios(vx, vy, omega, radius, zeta, mu, kappa):
     rvx = xp.where(vx != 0, 1.0 - factor * slip / xp.where(vx != 0, vx, 1.0), xp.nan)
     spin = xp.where(omega != 0, radius * omega, 1.0)
     rom = xp.where(omega != 0, 1.0 - (zeta - 1.0) * factor * slip / spin, xp.nan)
-    return rvx, rom
+    return VelocityRatios(rvx, rom)

@@ -33,15 +33,28 @@ terms in each condition (e.g. ``|(zeta-1) a| + |b|`` for ``b = (zeta-1) a``).
 
 from __future__ import annotations
 
+from typing import Any, NamedTuple
+
 import numpy as np
 
 from ._xp import arrays
-from .kinematics import sticks
+from .impulse import sticks
 
-__all__ = ["OUTCOMES", "rebound_outcomes"]
+__all__ = ["OUTCOMES", "OutcomeFlags", "rebound_outcomes"]
 
 #: Names of the flags returned by :func:`rebound_outcomes`, in order.
 OUTCOMES = ("backward", "reversed_spin", "vertical", "spinning", "rolling")
+
+
+class OutcomeFlags(NamedTuple):
+    """The flags of :func:`rebound_outcomes` (boolean arrays), in the order of :data:`OUTCOMES`."""
+
+    backward: Any
+    reversed_spin: Any
+    vertical: Any
+    spinning: Any
+    rolling: Any
+
 
 #: Relative tolerance, in units of the velocity scale, for the equalities.
 _RTOL = 16 * float(np.finfo(np.float64).eps)  # a Python float: any array library takes it
@@ -52,6 +65,9 @@ def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
 
     Returns
     -------
+    OutcomeFlags
+        A named tuple of boolean arrays:
+
     backward : ndarray of bool
         ``vx^- != 0`` and ``vx^+`` has the opposite sign (the body bounces back).
     reversed_spin : ndarray of bool
@@ -82,4 +98,4 @@ def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
     zero_w = xp.abs(gw) <= _RTOL * size_w
     backward = (a != 0) & ~zero_x & (xp.sign(gx) == -xp.sign(a))
     reversed_spin = (b != 0) & ~zero_w & (xp.sign(gw) == -xp.sign(b))
-    return backward, reversed_spin, zero_x, ~zero_w, stick
+    return OutcomeFlags(backward, reversed_spin, zero_x, ~zero_w, stick)

@@ -11,9 +11,23 @@ body of this package, with its stick-slip transition, never does.
 
 from __future__ import annotations
 
+from typing import Any, NamedTuple
+
 from ._xp import arrays, result
 
-__all__ = ["particle_rebound", "particle_energy_change", "particle_energy_threshold"]
+__all__ = [
+    "ParticleRebound",
+    "particle_rebound",
+    "particle_energy_change",
+    "particle_energy_threshold",
+]
+
+
+class ParticleRebound(NamedTuple):
+    """Rebound velocity of a particle, m/s."""
+
+    vx: Any
+    vy: Any
 
 
 def particle_rebound(vx, vy, mu, kappa):
@@ -23,7 +37,7 @@ def particle_rebound(vx, vy, mu, kappa):
     ``vx = 0`` the slip direction is undefined and no friction acts.
     """
     xp, (vx, vy) = arrays(vx, vy)
-    return vx - (1.0 + kappa) * mu * xp.sign(vx) * xp.abs(vy), -kappa * vy
+    return ParticleRebound(vx - (1.0 + kappa) * mu * xp.sign(vx) * xp.abs(vy), -kappa * vy)
 
 
 def particle_energy_change(vx, vy, mass, mu, kappa):

@@ -17,8 +17,7 @@ from .result import Result, freeze
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
 
 Array = result.Array
-_out = freeze  # the old private name, kept for the modules that import it
-_Indexable = Result
+_out = freeze
 
 
 @dataclass(frozen=True, eq=False)
