@@ -1,0 +1,182 @@
+"""The shape of the package (docs/architecture.md), checked from its source.
+
+* Layers: ``core`` <- ``model`` <- ``io`` / ``viz`` / ``engines`` <- ``cli``; imports
+  point down only (every import counts, also those inside functions).
+* No import cycles among the package's modules.
+* Each module imports on its own in a fresh interpreter.
+* No module over 400 lines.
+* The old module paths (``spinimpact.batch``, ...) still work, and nothing inside the
+  package imports them.
+"""
+
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "spinimpact"
+
+#: Modules kept at their old paths so existing imports keep working; each is an alias
+#: of its new home. Nothing inside the package may import them.
+ALIASES = {
+    "spinimpact.batch": "spinimpact.io.batch",
+    "spinimpact.sweep": "spinimpact.io.sweep",
+    "spinimpact.plots": "spinimpact.viz.plots",
+    "spinimpact.html": "spinimpact.viz.html",
+    "spinimpact.report": "spinimpact.viz.report",
+}
+#: Public facades: short import paths for users, never imported by the package itself.
+FACADES = {"spinimpact.dynamics"}
+
+#: What each layer may import from the package (besides itself).
+ALLOWED = {
+    "core": {"core"},
+    "model": {"core", "model", "_validation"},
+    "io": {"core", "model", "io", "_validation", "__init__"},
+    "viz": {"core", "model", "viz", "io", "_validation", "__init__"},
+    "engines": {"core", "model", "engines", "_validation", "__init__"},
+    "cli": {"core", "model", "io", "viz", "engines", "cli", "_validation", "__init__"},
+    "_validation": set(),
+}
+
+
+def _module_name(path: Path) -> str:
+    parts = list(path.relative_to(SRC.parent).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+MODULES = {_module_name(p): p for p in sorted(SRC.rglob("*.py"))}
+
+
+def _imports(name: str, path: Path) -> set[str]:
+    """The package modules that ``name`` imports, anywhere in its source."""
+    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    found: set[str] = set()
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.Import):
+            targets = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[: len(base) - (node.level - 1)]
+                stem = ".".join(base + ([node.module] if node.module else []))
+            else:
+                stem = node.module or ""
+            # "from . import core" imports a module; "from .x import f" imports x
+            targets = [f"{stem}.{a.name}" for a in node.names]
+            if node.module:
+                targets.append(stem)
+        else:
+            continue
+        for t in targets:
+            while t and t not in MODULES:
+                t = t.rpartition(".")[0]
+            if t.startswith("spinimpact") and t != name:
+                found.add(t)
+    return found
+
+
+GRAPH = {name: _imports(name, path) for name, path in MODULES.items()}
+
+
+def _layer(name: str) -> str | None:
+    parts = name.split(".")
+    if len(parts) == 1:
+        return "__init__"
+    return parts[1]
+
+
+def test_the_source_tree_was_found():
+    assert {"spinimpact.core.impulse", "spinimpact.model.impact", "spinimpact.cli"} <= set(GRAPH)
+
+
+@pytest.mark.parametrize("name", sorted(GRAPH))
+def test_imports_point_down_the_layers(name):
+    layer = _layer(name)
+    if layer not in ALLOWED:  # the top level, aliases and facades: checked below
+        return
+    wrong = {t for t in GRAPH[name] if _layer(t) not in ALLOWED[layer] | {layer}}
+    wrong |= {t for t in GRAPH[name] if t in ALIASES or t in FACADES}
+    assert not wrong, f"{name} ({layer}) imports {sorted(wrong)}"
+
+
+def test_no_import_cycles():
+    state: dict[str, int] = {}  # 1: on the current path, 2: done
+    path: list[str] = []
+
+    def visit(node: str) -> None:
+        state[node] = 1
+        path.append(node)
+        for nxt in sorted(GRAPH[node]):
+            if state.get(nxt) == 1:
+                cycle = path[path.index(nxt) :] + [nxt]
+                raise AssertionError("import cycle: " + " -> ".join(cycle))
+            if nxt not in state:
+                visit(nxt)
+        path.pop()
+        state[node] = 2
+
+    for node in sorted(GRAPH):
+        if node not in state:
+            visit(node)
+
+
+def test_the_cycle_check_can_fail():
+    """The checker sees a cycle written into a copy of the graph."""
+    saved = dict(GRAPH)
+    try:
+        GRAPH["spinimpact.core.impulse"] = GRAPH["spinimpact.core.impulse"] | {
+            "spinimpact.core.kinematics"
+        }
+        with pytest.raises(AssertionError, match="import cycle"):
+            test_no_import_cycles()
+    finally:
+        GRAPH.clear()
+        GRAPH.update(saved)
+
+
+def test_each_module_imports_alone_in_a_fresh_interpreter():
+    """One child interpreter per module (batched in one process each, for speed);
+    an import cycle that breaks at import time, or a missing name, fails here."""
+    names = sorted(n for n in MODULES if n not in ALIASES and n != "spinimpact.__main__")
+    code = "import importlib, sys\nname = sys.argv[1]\nimportlib.import_module(name)\n"
+    procs = [
+        subprocess.Popen([sys.executable, "-c", code, n], stderr=subprocess.PIPE, text=True)
+        for n in names
+    ]
+    failed = {}
+    for n, p in zip(names, procs, strict=True):
+        _, err = p.communicate(timeout=120)
+        if p.returncode:
+            failed[n] = err.strip().splitlines()[-1]
+    assert not failed, failed
+
+
+@pytest.mark.parametrize("old", sorted(ALIASES))
+def test_old_module_paths_are_the_new_modules(old):
+    import importlib
+
+    assert importlib.import_module(old) is importlib.import_module(ALIASES[old])
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_no_module_over_400_lines(name):
+    lines = MODULES[name].read_text().count("\n")
+    assert lines <= 400, f"{name} has {lines} lines"
+
+
+def test_importing_the_package_stays_light():
+    code = (
+        "import sys, spinimpact\n"
+        "heavy = [m for m in ('matplotlib', 'rich', 'click', 'scipy', 'numba', 'dask',\n"
+        "         'pyarrow', 'jax', 'pybullet', 'mujoco') if m in sys.modules]\n"
+        "print(','.join(heavy))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
