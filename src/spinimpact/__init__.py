@@ -17,6 +17,8 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 from .model.body import Body
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.particle import ParticleImpact, solve_particle
+from .model.planar import PlanarHistory, PlanarImpact, solve_planar
+from .model.planar_body import PlanarBody
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 
 __version__ = "0.1.0"
@@ -28,9 +30,13 @@ __all__ = [
     "Impact",
     "Outcome",
     "ParticleImpact",
+    "PlanarBody",
+    "PlanarHistory",
+    "PlanarImpact",
     "RestitutionModel",
     "State",
     "TabulatedRestitution",
     "solve",
     "solve_particle",
+    "solve_planar",
 ]

@@ -65,6 +65,9 @@ __all__ = [
     "planar_process",
     "planar_state_at",
     "planar_work",
+    "planar_min_energy_impulse",
+    "planar_contact_velocity",
+    "planar_apply_impulse",
 ]
 
 #: Restitution laws, indexed by the ``law`` codes of :func:`planar_process`.
@@ -258,3 +261,45 @@ def planar_work(lo, hi, slip, vn, w_tt, w_tn, w_nn, mu, tau_slip):
         normal = normal + h * (a.normal + b.normal) / 2.0
         tangential = tangential + h * ratio * (a.slip + b.slip) / 2.0
     return normal, tangential
+
+
+def planar_min_energy_impulse(slip, vn, w_tt, w_tn, w_nn, mu, tau_slip, tau_end):
+    """Normal impulse ``tau_m`` at which the kinetic energy is smallest, N s.
+
+    ``dE/dtau = v + u s`` is continuous (``u = 0`` where ``s`` jumps) and, on each
+    phase, grows at ``(s, 1) W (s, 1)^T > 0``: ``E`` is convex in ``tau``. Its minimum
+    is where ``v + u s`` vanishes, on the first phase if that root comes before
+    ``tau_s``, else on the second; capped at ``tau_f`` (the energy may still fall when
+    the impact ends).
+    """
+    xp, (u0, v0, mu, s1, k1, r1, _, _, s2, k2, r2) = _phases(slip, vn, w_tt, w_tn, w_nn, mu)
+    xp, (tau_slip, tau_end) = arrays(tau_slip, tau_end)
+    finite = tau_slip != xp.inf
+    ts = xp.where(finite, tau_slip, 0.0)
+    grow1 = r1 + k1 * s1  # = (s1, 1) W (s1, 1)^T
+    root1 = -(v0 + u0 * s1) / grow1
+    v1 = v0 + r1 * ts
+    grow2 = r2 + k2 * s2
+    with quiet(xp, divide="ignore", invalid="ignore"):
+        root2 = ts - v1 / _safe(xp, grow2 > 0, grow2)
+    tau_m = xp.where(root1 <= tau_slip, root1, root2)
+    return xp.minimum(xp.maximum(tau_m, 0.0), tau_end)
+
+
+def planar_contact_velocity(vx, vy, omega, rx, ry):
+    """Velocity ``(u, v)`` of the contact point at offset ``(rx, ry)`` from the centre of
+    mass: ``u = vx - omega ry``, ``v = vy + omega rx`` (``c = v_G + omega e_z x r``), m/s."""
+    return vx - omega * ry, vy + omega * rx
+
+
+def planar_apply_impulse(vx, vy, omega, mass, inertia, rx, ry, friction, normal):
+    """Body velocities after a contact impulse ``(f, tau)`` at offset ``(rx, ry)``.
+
+    ``vx + f/m``, ``vy + tau/m``, ``omega + (rx tau - ry f)/J`` (momentum and angular
+    momentum about the centre of mass).
+    """
+    return (
+        vx + friction / mass,
+        vy + normal / mass,
+        omega + (rx * normal - ry * friction) / inertia,
+    )
