@@ -1,6 +1,7 @@
 """`spinimpact batch`: CSV (and Parquet) files of incidences, solved in chunks."""
 
 import csv
+import dataclasses
 import subprocess
 import sys
 
@@ -8,7 +9,9 @@ import numpy as np
 import pytest
 
 from spinimpact import Body, solve
-from spinimpact.io.batch import RESULT_COLUMNS, BatchError, run_batch
+from spinimpact.io.batch import RESULT_COLUMNS, BatchError, result_columns, run_batch
+from spinimpact.model.impact import Impact
+from spinimpact.model.result import Array
 
 DEFAULTS = dict(mu=0.3, kappa=0.8, mass=1.0, radius=0.1, body="solid-sphere", gyration=None)
 
@@ -335,3 +338,95 @@ def test_csv_writer_without_pyarrow_gives_the_same_values(mixed, tmp_path, monke
         read_csv(tmp_path / "arrow.csv"), read_csv(tmp_path / "plain.csv"), strict=True
     ):
         assert {k: value(v) for k, v in a.items()} == {k: value(v) for k, v in b.items()}
+
+
+INPUT_FIELDS = {
+    "mass",
+    "radius",
+    "gyration",
+    "mu",
+    "kappa",
+    "before_vx",
+    "before_vy",
+    "before_omega",
+}
+#: The output columns files had before they were derived from Impact: users' files keep them.
+OLD_COLUMNS = (
+    "regime zeta after_vx after_vy after_omega slip_before slip_after incidence_ratio tau0 "
+    "tau_star tau1 tangential_impulse impulse_ratio kinetic_energy_before kinetic_energy_after "
+    "dissipated_energy work_compression_normal work_compression_tangential "
+    "work_restitution_normal work_restitution_tangential work_ratio_tangential "
+    "min_kinetic_energy tau_min_energy min_energy_case newton_restitution poisson_restitution "
+    "energetic_restitution backward reversed_spin vertical spinning rolling"
+).split()
+
+
+def test_batch_columns_are_the_impact_vocabulary():
+    names = Impact.column_names()
+    assert set(RESULT_COLUMNS) == set(names) - INPUT_FIELDS
+    assert list(RESULT_COLUMNS) == ["regime"] + [
+        n for n in names if n not in INPUT_FIELDS and n != "regime"
+    ]  # the regime leads; the rest in the result's order
+    assert set(OLD_COLUMNS) <= set(RESULT_COLUMNS)
+    assert [n for n in RESULT_COLUMNS if n in OLD_COLUMNS] == OLD_COLUMNS  # same order
+    assert "dissipated_fraction" in RESULT_COLUMNS
+
+    @dataclasses.dataclass(frozen=True, eq=False)
+    class Larger(Impact):  # a field added to the result is a column of the file
+        spin_energy_after: Array = None
+
+    assert result_columns(Larger) == (*RESULT_COLUMNS, "spin_energy_after")
+
+
+def test_every_output_column_is_the_impact_column(mixed, tmp_path):
+    path, rows = mixed
+    rows = rows[:40]
+    write_csv(path, ["vx", "vy", "omega", "mu", "kappa", "body", "gyration"], rows)
+    run_batch(path, tmp_path / "out.csv", defaults=DEFAULTS, chunk_size=16)
+    got = read_csv(tmp_path / "out.csv")
+    assert list(got[0]) == ["vx", "vy", "omega", "mu", "kappa", "body", "gyration"] + list(
+        RESULT_COLUMNS
+    )
+    for row, line in zip(rows, got, strict=True):
+        want = expected(row).columns()
+        for name in RESULT_COLUMNS:
+            value = want[name][()]
+            if isinstance(value, np.bool_):
+                assert line[name] == ("true" if value else "false"), name
+            elif isinstance(value, str):
+                assert line[name] == value, name
+            else:  # shortest round-trip text: the same float, NaN included
+                np.testing.assert_array_equal(float(line[name]), value, err_msg=name)
+
+
+def hide_pyarrow(monkeypatch):
+    for name in ("pyarrow", "pyarrow.parquet", "pyarrow.csv"):
+        monkeypatch.setitem(sys.modules, name, None)  # any import of pyarrow now fails
+
+
+@pytest.mark.parametrize(("source", "target"), [("in.csv", "out.parquet"), ("in.pq", "out.csv")])
+def test_parquet_without_pyarrow_names_the_extra(tmp_path, monkeypatch, source, target):
+    (tmp_path / source).write_text("vx,vy,omega\n1,-1,0\n")
+    hide_pyarrow(monkeypatch)
+    with pytest.raises(ImportError, match=r"Parquet files needs pyarrow.*spinimpact\[parquet\]"):
+        run_batch(tmp_path / source, tmp_path / target, defaults=DEFAULTS)
+    assert [p.name for p in tmp_path.iterdir()] == [source]  # nothing written
+
+
+def test_csv_without_pyarrow_uses_the_csv_module(mixed, tmp_path, monkeypatch):
+    path, rows = mixed
+    run_batch(path, tmp_path / "arrow.csv", defaults=DEFAULTS)
+    hide_pyarrow(monkeypatch)
+    summary = run_batch(path, tmp_path / "plain.csv", defaults=DEFAULTS)
+    assert summary.rows == len(rows)
+    a, b = read_csv(tmp_path / "arrow.csv"), read_csv(tmp_path / "plain.csv")
+    assert [r["after_vx"] for r in b] == [repr(float(r["after_vx"])) for r in a]
+
+
+def test_chunk_size_type_and_value(tmp_path):
+    src = tmp_path / "in.csv"
+    src.write_text("vx,vy,omega\n1,-1,0\n")
+    with pytest.raises(TypeError, match="chunk_size must be a positive integer, got 2.5"):
+        run_batch(src, tmp_path / "o.csv", defaults=DEFAULTS, chunk_size=2.5)
+    with pytest.raises(ValueError, match="chunk_size must be a positive integer, got 0"):
+        run_batch(src, tmp_path / "o.csv", defaults=DEFAULTS, chunk_size=0)

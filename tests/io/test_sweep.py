@@ -8,7 +8,8 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.core import REGIMES
-from spinimpact.io.sweep import Sweep, parse_axis, run_sweep
+from spinimpact.io.sweep import ALIASES, FIELDS, Sweep, dask_client, parse_axis, run_sweep
+from spinimpact.model.impact import Impact
 
 BODY = Body.solid_sphere(mass=1.0, radius=0.1)
 
@@ -118,9 +119,9 @@ def test_dask_cluster_gives_the_same_numbers(tmp_path):
     local = run_sweep(sweep, histogram=("after_vx", -5, 5, 16))
     with (
         distributed.LocalCluster(
-            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
         ) as cluster,
-        distributed.Client(cluster) as client,
+        dask_client(cluster.scheduler_address) as client,
     ):
         remote = run_sweep(sweep, histogram=("after_vx", -5, 5, 16), client=client)
         run_sweep(sweep, output=tmp_path / "dask", fields=("after_vx",), client=client)
@@ -171,3 +172,87 @@ def test_histogram_spec_errors():
         timeout=120,
     )
     assert out.returncode == 2 and "FIELD:LOW:HIGH:BINS" in out.stderr
+
+
+SPOOL = Body(mass=2.0, radius=0.02, gyration=0.05)  # rho > R: zeta < 2
+RANDOM = dict(
+    vx="uniform:-5:5", vy="uniform:-5:-0.1", omega="uniform:-300:300", mu="uniform:0:1",
+    kappa="uniform:0:1",
+)  # fmt: skip
+# grid ends hit the edge cases: mu = 0 (frictionless), vx = omega = 0 (no slip), kappa 0 and 1
+GRID = dict(vx="-2:2:9", vy="-3:-0.5:3", omega="-40:40:9", mu="0:1:5", kappa="0:1:3")
+
+
+def every_point(sweep, fields):
+    parts = [sweep.evaluate(k, fields) for k in range(sweep.chunks)]
+    return {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
+
+
+@pytest.mark.parametrize("body", [BODY, SPOOL, Body.ring(mass=0.5, radius=1.0)], ids=str)
+@pytest.mark.parametrize(
+    ("spec", "samples"), [(RANDOM, 3000), (GRID, None)], ids=["random", "grid"]
+)
+def test_every_sweep_field_is_the_impact_column_of_its_name(body, spec, samples):
+    sweep = Sweep(
+        body, {k: parse_axis(k, v) for k, v in spec.items()}, samples=samples, chunk_size=701
+    )
+    got = every_point(sweep, tuple(FIELDS))
+    imp = solve(body, got["vx"], got["vy"], got["omega"], mu=got["mu"], kappa=got["kappa"])
+    want = imp.columns()
+    assert set(FIELDS) <= set(Impact.column_names())  # one vocabulary
+    assert len(set(imp.regime)) == (len(REGIMES) if spec is GRID else 3)  # the cases cover them
+    for name in FIELDS:
+        if name == "regime":  # stored as its code
+            np.testing.assert_array_equal(np.asarray(REGIMES)[got[name]], want[name])
+            continue
+        # The same core kernels on the same numbers: equal to rounding (today bit for
+        # bit); atol, relative to the field's scale, covers values that cancel to ~0
+        # (the after_vx of a ball that stuck).
+        scale = np.max(np.abs(want[name]))
+        np.testing.assert_allclose(got[name], want[name], rtol=1e-12, atol=1e-12 * scale)
+
+
+def test_old_field_names_are_aliases(tmp_path):
+    assert ALIASES == {"energy_loss": "dissipated_fraction"}
+    sweep = make(chunk_size=500)
+    data = every_point(sweep, ("energy_loss", "dissipated_fraction"))
+    np.testing.assert_array_equal(data["energy_loss"], data["dissipated_fraction"])
+    a = run_sweep(sweep, histogram=("energy_loss", 0, 1, 9))
+    b = run_sweep(sweep, histogram=("dissipated_fraction", 0, 1, 9))
+    np.testing.assert_array_equal(a.histogram, b.histogram)
+    assert a.histogram.sum() == sweep.size  # every fraction lies in [0, 1)
+    # a field asked for by its old name is written under that name
+    run_sweep(sweep, output=tmp_path / "old", fields=("energy_loss",))
+    assert sorted(p.name for p in (tmp_path / "old").iterdir()) == [
+        "energy_loss.npy", "kappa.npy", "mu.npy", "omega.npy", "vx.npy", "vy.npy",
+    ]  # fmt: skip
+    with pytest.raises(ValueError, match=r"fields must be among .*\(or energy_loss for "):
+        run_sweep(sweep, fields=("loss",))
+    with pytest.raises(ValueError, match="histogram field must be among"):
+        run_sweep(sweep, histogram=("vx", 0, 1, 2))
+
+
+def test_parquet_output_without_pyarrow_names_the_extra(tmp_path, monkeypatch):
+    for name in ("pyarrow", "pyarrow.parquet"):
+        monkeypatch.setitem(sys.modules, name, None)  # any import of pyarrow now fails
+    with pytest.raises(ImportError, match=r"Parquet output needs pyarrow.*spinimpact\[parquet\]"):
+        run_sweep(make(), output=tmp_path / "s.parquet")
+    assert list(tmp_path.iterdir()) == []  # nothing started
+
+
+def test_dask_client_without_distributed_names_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "distributed", None)
+    with pytest.raises(ImportError, match=r"Dask cluster needs distributed.*spinimpact\[dask\]"):
+        dask_client("tcp://127.0.0.1:1")
+
+
+def test_wrong_types_and_values_of_counts():
+    axes = {k: parse_axis(k, v) for k, v in RANDOM.items()}
+    with pytest.raises(TypeError, match="samples must be a positive integer"):
+        Sweep(BODY, axes, samples=10.0)
+    with pytest.raises(ValueError, match="samples must be a positive integer"):
+        Sweep(BODY, axes, samples=0)
+    with pytest.raises(TypeError, match="chunk_size must be a positive integer"):
+        Sweep(BODY, axes, samples=10, chunk_size=True)
+    with pytest.raises(TypeError, match="body must be a spinimpact.Body"):
+        Sweep("ball", axes, samples=10)

@@ -7,7 +7,7 @@ each input once and write each output once, in parallel over cores.
 
 They perform the same IEEE operations in the same order as the NumPy kernels
 (no fast-math, no fused multiply-add), so the results are identical bit for
-bit; ``tests/test_fused.py`` checks this over all regimes. Without Numba,
+bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba,
 :func:`rebound` falls back to the NumPy path.
 """
 
@@ -19,13 +19,15 @@ from .kinematics import rebound as _rebound_numpy
 
 __all__ = ["HAVE_NUMBA", "rebound"]
 
+_NUMBA_ERROR: ImportError | None = None  #: why Numba did not import, if it did not
 try:  # pragma: no cover - depends on the optional extra
     import numba
 
     HAVE_NUMBA = True
-except ImportError:  # pragma: no cover
+except ImportError as err:  # pragma: no cover
     numba = None
     HAVE_NUMBA = False
+    _NUMBA_ERROR = err
 
 
 if HAVE_NUMBA:
@@ -70,11 +72,23 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     ``out`` may give three preallocated C-contiguous float64 arrays of the
     broadcast shape to write into (avoids page-faulting fresh memory on every
     call in a loop over chunks).
+
+    Raises
+    ------
+    ImportError
+        For ``fused=True`` without Numba, naming the ``[fast]`` extra.
+    ValueError
+        For an ``out`` that is not three C-contiguous float64 arrays of the shape.
     """
     if fused is None:
         fused = HAVE_NUMBA
     if fused and not HAVE_NUMBA:
-        raise ValueError("fused=True needs Numba: pip install 'spinimpact[fast]'")
+        # Worded as spinimpact._validation.require words every missing extra (core
+        # imports nothing else of the package, so it cannot call require itself).
+        raise ImportError(
+            "fused=True needs numba, which is not installed: pip install 'spinimpact[fast]'",
+            name="numba",
+        ) from _NUMBA_ERROR
     args = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in
                                  (vx, vy, omega, mass, radius, zeta, mu, kappa)))  # fmt: skip
     if not fused:

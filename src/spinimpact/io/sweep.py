@@ -8,6 +8,12 @@ whatever the number of points, either streaming the fields to Parquet or
 on the fly. Given a Dask client, the same chunks run on a Dask cluster and give
 the same numbers.
 
+The fields (:data:`FIELDS`) are named as the columns of
+:class:`~spinimpact.Impact` and hold the same numbers (computed by the same
+core kernels, without building the whole result); ``regime`` is stored as its
+integer code, ``spinimpact.core.REGIMES[code]`` being the Impact's text. Older
+names stay accepted (:data:`ALIASES`).
+
 Random samples are drawn per chunk from ``numpy.random.default_rng([seed,
 chunk])``, so a sweep is reproducible for a given seed and chunk size.
 """
@@ -16,106 +22,39 @@ from __future__ import annotations
 
 import math
 import os
-import shutil
-import tempfile
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from .. import core
-from .._validation import validated
-from ..core import fused
+from .._validation import require, validated
 from ..model.body import Body
+from ._axes import INPUTS, Axis, parse_axis
+from ._fields import ALIASES, FIELDS, REBOUND_FIELDS, field_name, rebound_fields
+from ._sinks import npy_columns, parquet_columns
 
-__all__ = ["Axis", "Sweep", "SweepResult", "FIELDS", "run_sweep", "parse_axis"]
-
-INPUTS = ("vx", "vy", "omega", "mu", "kappa")
-
-
-def _f_rebound(c: dict[str, np.ndarray], b: dict[str, float]) -> tuple[np.ndarray, ...]:
-    return fused.rebound(
-        c["vx"], c["vy"], c["omega"], b["mass"], b["radius"], b["zeta"], c["mu"], c["kappa"]
-    )
-
-
-def _f_regime(c, b):
-    slip = core.slip_velocity(c["vx"], c["omega"], b["radius"])
-    return core.regime_code(slip, c["vy"], b["zeta"], c["mu"], c["kappa"])
-
-
-def _f_loss(c, b):
-    args = (c["vx"], c["vy"], c["omega"], b["mass"], b["radius"], b["zeta"], c["mu"], c["kappa"])
-    inertia = b["mass"] * b["radius"] ** 2 / (b["zeta"] - 1.0)
-    e0 = core.kinetic_energy(c["vx"], c["vy"], c["omega"], b["mass"], inertia)
-    return core.dissipated_energy(*args) / e0
+__all__ = [
+    "ALIASES",
+    "FIELDS",
+    "INPUTS",
+    "Axis",
+    "Sweep",
+    "SweepResult",
+    "dask_client",
+    "field_name",
+    "parse_axis",
+    "run_sweep",
+]
 
 
-def _f_impulse_ratio(c, b):
-    slip = core.slip_velocity(c["vx"], c["omega"], b["radius"])
-    return core.impulse_ratio(slip, c["vy"], b["zeta"], c["mu"], c["kappa"])
-
-
-def _f_slip_after(c, b):
-    slip = core.slip_velocity(c["vx"], c["omega"], b["radius"])
-    return core.rebound_slip(slip, c["vy"], b["zeta"], c["mu"], c["kappa"])
-
-
-#: Fields a sweep can write or reduce, and how each is computed from a chunk.
-FIELDS: dict[str, Callable[[dict, dict], np.ndarray]] = {
-    "after_vx": lambda c, b: _f_rebound(c, b)[0],
-    "after_vy": lambda c, b: _f_rebound(c, b)[1],
-    "after_omega": lambda c, b: _f_rebound(c, b)[2],
-    "regime": _f_regime,  # integer code: spinimpact.core.REGIMES[code]
-    "energy_loss": _f_loss,  # dissipated energy / incidence energy
-    "impulse_ratio": _f_impulse_ratio,
-    "slip_after": _f_slip_after,
-}
-
-
-@dataclass(frozen=True)
-class Axis:
-    """One input of a sweep: ``fixed`` at ``lo``, an evenly spaced ``grid`` of
-    ``num`` values on ``[lo, hi]``, or ``uniform`` random on ``[lo, hi)``."""
-
-    name: str
-    kind: str
-    lo: float
-    hi: float = math.nan
-    num: int = 1
-
-    def values(self) -> np.ndarray:
-        return (
-            np.linspace(self.lo, self.hi, self.num) if self.kind == "grid" else np.array([self.lo])
-        )
-
-
-def parse_axis(name: str, text: str | float) -> Axis:
-    """``"3"`` (fixed), ``"-5:5:101"`` (grid: start, stop, number of points) or
-    ``"uniform:-5:5"`` (random)."""
-    if name not in INPUTS:
-        raise ValueError(f"sweep inputs are {', '.join(INPUTS)}; got {name!r}")
-    parts = str(text).split(":")
-    try:
-        if len(parts) == 1:
-            return Axis(name, "fixed", float(parts[0]))
-        if len(parts) == 3 and parts[0] == "uniform":
-            lo, hi = float(parts[1]), float(parts[2])
-            if not lo < hi:
-                raise ValueError
-            return Axis(name, "uniform", lo, hi)
-        if len(parts) == 3:
-            num = int(parts[2])
-            if num < 1:
-                raise ValueError
-            return Axis(name, "grid", float(parts[0]), float(parts[1]), num)
-    except ValueError:
-        pass
-    raise ValueError(
-        f"{name} must be a number, START:STOP:NUM (a grid) or uniform:LOW:HIGH, got {text!r}"
-    )
+def _positive_int(name: str, value: Any, extra: str = "") -> int:
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise TypeError(f"{name} must be a positive integer{extra}, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be a positive integer{extra}, got {value!r}")
+    return int(value)
 
 
 @dataclass(frozen=True)
@@ -125,14 +64,27 @@ class Sweep:
     Parameters
     ----------
     body : Body
-        A single body (scalar mass, radius, gyration).
+        A single body (scalar mass in kg, radius and gyration in m).
     axes : dict
-        ``name -> Axis`` for each of ``vx, vy, omega, mu, kappa`` (all required).
+        ``name -> Axis`` for each of ``vx, vy`` (m/s), ``omega`` (rad/s), ``mu,
+        kappa`` (all required).
     samples : int, optional
         Number of random points; required when any axis is ``uniform``, which
         excludes ``grid`` axes.
     seed : int
+        Seed of the random points.
     chunk_size : int
+        Points evaluated at a time; memory is bounded by it.
+
+    Raises
+    ------
+    TypeError
+        For a ``body`` that is not a :class:`~spinimpact.Body`, or a ``samples`` or
+        ``chunk_size`` that is not an integer.
+    ValueError
+        For an array of bodies, a missing axis, grid and random axes mixed, a
+        missing or non-positive ``samples``, or an axis whose values break the
+        input rules (``vy < 0``, ``mu >= 0``, ``kappa`` in ``[0, 1]``, ...).
     """
 
     body: Body
@@ -144,6 +96,8 @@ class Sweep:
 
     def __post_init__(self) -> None:
         b = self.body
+        if not isinstance(b, Body):
+            raise TypeError(f"body must be a spinimpact.Body, got {type(b).__name__}")
         if any(np.ndim(x) for x in (b.mass, b.radius, b.gyration)):
             raise ValueError("a sweep needs a single body, not an array of bodies")
         missing = [n for n in INPUTS if n not in self.axes]
@@ -153,41 +107,44 @@ class Sweep:
         if "uniform" in kinds:
             if "grid" in kinds:
                 raise ValueError("a sweep is either a grid or random samples, not both")
-            if not isinstance(self.samples, int) or self.samples < 1:
-                raise ValueError(
-                    f"samples must be a positive integer for random axes, got {self.samples!r}"
-                )
+            if self.samples is None:
+                raise ValueError("samples must be a positive integer for random axes, got None")
+            _positive_int("samples", self.samples, " for random axes")
         elif self.samples is not None:
             raise ValueError("samples is for random (uniform) axes only")
-        if not isinstance(self.chunk_size, int) or self.chunk_size < 1:
-            raise ValueError(f"chunk_size must be a positive integer, got {self.chunk_size!r}")
+        _positive_int("chunk_size", self.chunk_size)
         for a in self.axes.values():  # every value an axis can take obeys the input rules
             ends = [a.lo] if a.kind == "fixed" else [a.lo, a.hi]
             for x in ends:
                 validated(a.name, x)
-        body = {"mass": float(b.mass), "radius": float(b.radius), "zeta": float(b.zeta)}
+        body = {name: float(getattr(b, name)) for name in ("mass", "radius", "zeta", "inertia")}
         object.__setattr__(self, "_body", body)
 
     @property
     def random(self) -> bool:
+        """Whether the points are random samples (else a grid)."""
         return self.samples is not None
 
     @property
     def size(self) -> int:
+        """Number of points."""
         if self.random:
             return self.samples  # type: ignore[return-value]
         return math.prod(a.num for a in self.axes.values())
 
     @property
     def chunks(self) -> int:
+        """Number of chunks."""
         return -(-self.size // self.chunk_size)
 
-    def chunk(self, k: int) -> dict[str, np.ndarray]:
-        """Input arrays of chunk ``k`` (points ``k*chunk_size`` onwards)."""
+    def chunk(self, k: int) -> dict[str, Any]:
+        """Input values of chunk ``k`` (points ``k*chunk_size`` onwards).
+
+        Fixed inputs stay Python numbers, so the kernels take their fast
+        scalar-parameter path; varying inputs are arrays of the chunk's length.
+        """
         start = k * self.chunk_size
-        n = min(self.chunk_size, self.size - start)
-        # Fixed inputs stay Python numbers, so the kernels take their fast
-        # scalar-parameter path; varying inputs are arrays of the chunk's length.
+        n = self.chunk_length(k)
         if self.random:
             rng = np.random.default_rng([self.seed, k])
             out: dict[str, Any] = {}
@@ -205,48 +162,76 @@ class Sweep:
         }
 
     def chunk_length(self, k: int) -> int:
+        """Number of points in chunk ``k``."""
         return min(self.chunk_size, self.size - k * self.chunk_size)
 
     def evaluate(self, k: int, fields: tuple[str, ...]) -> dict[str, np.ndarray]:
-        """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length."""
+        """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length.
+
+        Parameters
+        ----------
+        k : int
+            Chunk number, ``0 <= k < chunks``.
+        fields : tuple of str
+            Names from :data:`FIELDS` or :data:`ALIASES`; each comes back under the
+            name asked for.
+
+        Returns
+        -------
+        dict
+            ``vx, vy, omega, mu, kappa`` and the fields, in that order.
+        """
         c = self.chunk(k)
+        known: dict[str, Any] = {}
+        wanted = {name: field_name(name) for name in fields}
+        if any(f in REBOUND_FIELDS for f in wanted.values()):  # one fused pass for all three
+            known.update(zip(REBOUND_FIELDS, rebound_fields(c, self._body), strict=True))
         out = dict(c)
-        if any(name.startswith("after_") for name in fields):  # one fused pass for all three
-            out["after_vx"], out["after_vy"], out["after_omega"] = _f_rebound(c, self._body)
-        for name in fields:
-            if name not in out:
-                out[name] = FIELDS[name](c, self._body)
+        for name, f in wanted.items():
+            if f not in known:
+                known[f] = FIELDS[f](c, self._body)
+            out[name] = known[f]
         n = self.chunk_length(k)
-        return {name: np.broadcast_to(out[name], (n,)) for name in (*c, *fields)}
+        return {name: np.broadcast_to(value, (n,)) for name, value in out.items()}
 
 
 @dataclass
 class SweepResult:
     """Reductions of a sweep, folded chunk by chunk."""
 
-    points: int = 0
+    points: int = 0  #: points evaluated
+    #: points per regime, in the order of ``spinimpact.core.REGIMES``
     regime_counts: np.ndarray = field(default_factory=lambda: np.zeros(len(core.REGIMES), np.int64))
-    histogram: np.ndarray | None = None
-    bin_edges: np.ndarray | None = None
+    histogram: np.ndarray | None = None  #: counts per bin, if a histogram was asked for
+    bin_edges: np.ndarray | None = None  #: the histogram's ``bins + 1`` edges
 
     @property
     def regime_fractions(self) -> dict[str, float]:
+        """Share of the points in each regime, by name."""
         total = max(self.points, 1)
         return {
             name: int(c) / total for name, c in zip(core.REGIMES, self.regime_counts, strict=True)
         }
 
 
-def _reduce_chunk(sweep: Sweep, k: int, histogram: tuple[str, float, float, int] | None):
-    """Regime counts (and a histogram) of chunk ``k``: small, picklable, summable."""
-    fields = ("regime",) + ((histogram[0],) if histogram and histogram[0] != "regime" else ())
-    data = sweep.evaluate(k, fields)
-    counts = np.bincount(data["regime"], minlength=len(core.REGIMES))
-    hist = None
-    if histogram:
-        name, lo, hi, bins = histogram
-        hist, _ = np.histogram(data[name], bins=bins, range=(lo, hi))
-    return data["regime"].size, counts, hist
+@dataclass(frozen=True)
+class _Work:
+    """One chunk's reductions (and columns to write): small, picklable, summable."""
+
+    sweep: Sweep
+    columns: tuple[str, ...]  #: columns to send back for writing (may be empty)
+    histogram: tuple[str, float, float, int] | None
+
+    def __call__(self, k: int) -> tuple[int, np.ndarray, np.ndarray | None, dict]:
+        hist_field = (self.histogram[0],) if self.histogram else ()
+        names = dict.fromkeys(("regime", *self.columns, *hist_field))
+        data = self.sweep.evaluate(k, tuple(n for n in names if n not in INPUTS))
+        counts = np.bincount(data["regime"], minlength=len(core.REGIMES))
+        hist = None
+        if self.histogram:
+            name, lo, hi, bins = self.histogram
+            hist, _ = np.histogram(data[name], bins=int(bins), range=(lo, hi))
+        return data["regime"].size, counts, hist, {c: data[c] for c in self.columns}
 
 
 def _chunks_in_order(
@@ -268,6 +253,29 @@ def _chunks_in_order(
         yield pending.pop(k).result()
 
 
+def dask_client(address: str, *, timeout: float = 30) -> Any:
+    """Connect to the Dask scheduler at ``address``, for ``run_sweep(..., client=...)``.
+
+    Parameters
+    ----------
+    address : str
+        The scheduler's address, e.g. ``"tcp://10.0.0.5:8786"``.
+    timeout : float
+        Seconds to wait for the connection.
+
+    Returns
+    -------
+    distributed.Client
+
+    Raises
+    ------
+    ImportError
+        Without ``distributed``, naming the ``[dask]`` extra.
+    """
+    distributed = require("distributed", "sweeps on a Dask cluster")
+    return distributed.Client(address, timeout=timeout)
+
+
 def run_sweep(
     sweep: Sweep,
     *,
@@ -279,19 +287,51 @@ def run_sweep(
 ) -> SweepResult:
     """Evaluate ``sweep`` chunk by chunk.
 
-    Always returns the regime fractions (and the ``histogram = (field, lo, hi,
-    bins)`` if asked). With ``output`` ending in ``.parquet`` the inputs and
-    ``fields`` are streamed to one Parquet file; any other ``output`` is a
-    directory of ``.npy`` files, one per column. ``client`` is a
-    ``dask.distributed.Client``: the chunks then run on its cluster.
+    Parameters
+    ----------
+    sweep : Sweep
+        The points.
+    histogram : tuple, optional
+        ``(field, low, high, bins)``: counts of a field (a name of :data:`FIELDS`
+        or :data:`ALIASES`, in its unit) in ``bins`` equal bins on ``[low, high)``.
+    output : str or os.PathLike, optional
+        A ``.parquet`` file (``[parquet]`` extra), or any other name: a new directory
+        of ``.npy`` files, one per column. Either holds the inputs and ``fields``.
+    fields : tuple of str
+        Fields to write to ``output``, by the names of :data:`FIELDS` or :data:`ALIASES`.
+    client : distributed.Client, optional
+        Run the chunks on its Dask cluster (see :func:`dask_client`).
+    progress : callable, optional
+        Called after each chunk as ``progress(done, total)`` in chunks.
+
+    Returns
+    -------
+    SweepResult
+        The regime fractions, and the histogram if asked for.
+
+    Raises
+    ------
+    ValueError
+        For an unknown field, a bad histogram, or an output that exists (a directory)
+        or whose directory does not.
+    ImportError
+        For Parquet output without pyarrow, naming the ``[parquet]`` extra.
+
+    Examples
+    --------
+    >>> from spinimpact import Body
+    >>> axes = {n: parse_axis(n, v) for n, v in
+    ...         dict(vx="-2:2:5", vy="-1", omega="0", mu="0.5", kappa="0.8").items()}
+    >>> result = run_sweep(Sweep(Body.solid_sphere(mass=1.0, radius=0.1), axes),
+    ...                    histogram=("energy_loss", 0, 1, 4))
+    >>> result.points, result.histogram.tolist()
+    (5, [0, 5, 0, 0])
     """
     for name in fields:
-        if name not in FIELDS:
-            raise ValueError(f"fields must be among {', '.join(FIELDS)}; got {name!r}")
+        field_name(name)
     if histogram is not None:
         name, lo, hi, bins = histogram
-        if name not in FIELDS:
-            raise ValueError(f"histogram field must be among {', '.join(FIELDS)}; got {name!r}")
+        field_name(name, "histogram field")
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
             raise ValueError(
                 f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
@@ -301,158 +341,34 @@ def run_sweep(
         result.histogram = np.zeros(int(histogram[3]), np.int64)
         result.bin_edges = np.linspace(histogram[1], histogram[2], int(histogram[3]) + 1)
     window = 4 if client is None else 2 * max(1, len(getattr(client, "nthreads", lambda: {1: 1})()))
-
-    def fold(n, counts, hist, k):
-        result.points += n
-        result.regime_counts += counts
-        if hist is not None:
-            result.histogram += hist
-        if progress is not None:
-            progress(k + 1, sweep.chunks)
-
+    columns = tuple(dict.fromkeys(INPUTS + tuple(fields))) if output is not None else ()
+    work = _Work(sweep, columns, histogram)
     if output is None:
-        work = _ReduceWork(sweep, histogram)
-        for k, (n, counts, hist) in enumerate(_chunks_in_order(sweep, work, client, window)):
-            fold(n, counts, hist, k)
-        return result
-    columns = tuple(INPUTS) + tuple(f for f in fields if f not in INPUTS)
-    work = _EvaluateWork(sweep, tuple(dict.fromkeys(fields + ("regime",))), histogram)
-    writer = (
-        _ParquetColumns(output, columns)
-        if str(output).endswith(".parquet")
-        else _NpyColumns(output, columns, sweep.size)
-    )
-    try:
-        for k, (data, hist) in enumerate(_chunks_in_order(sweep, work, client, window)):
-            writer.write({c: data[c] for c in columns})
-            counts = np.bincount(data["regime"], minlength=len(core.REGIMES))
-            fold(data["regime"].size, counts, hist, k)
-        writer.commit()
-    finally:
-        writer.discard()
+        sink: Any = _Discard()
+    elif str(output).endswith(".parquet"):
+        sink = parquet_columns(output)
+    else:
+        sink = npy_columns(output, columns, sweep.size)
+    with sink as writer:
+        for k, (n, counts, hist, data) in enumerate(_chunks_in_order(sweep, work, client, window)):
+            writer.write(data)
+            result.points += n
+            result.regime_counts += counts
+            if hist is not None:
+                result.histogram += hist
+            if progress is not None:
+                progress(k + 1, sweep.chunks)
     return result
 
 
-@dataclass(frozen=True)
-class _ReduceWork:
-    sweep: Sweep
-    histogram: tuple[str, float, float, int] | None
+class _Discard:
+    """The sink of a sweep without output: reductions only."""
 
-    def __call__(self, k: int):
-        return _reduce_chunk(self.sweep, k, self.histogram)
+    def __enter__(self) -> _Discard:
+        return self
 
+    def __exit__(self, *exc: object) -> None:
+        return None
 
-@dataclass(frozen=True)
-class _EvaluateWork:
-    sweep: Sweep
-    fields: tuple[str, ...]
-    histogram: tuple[str, float, float, int] | None
-
-    def __call__(self, k: int):
-        data = self.sweep.evaluate(k, self.fields)
-        hist = None
-        if self.histogram:
-            name, lo, hi, bins = self.histogram
-            values = data[name] if name in data else self.sweep.evaluate(k, (name,))[name]
-            hist, _ = np.histogram(values, bins=int(bins), range=(lo, hi))
-        return data, hist
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-class _ParquetColumns:
-    """Streams chunks to one Parquet file under a temporary name; renamed on success."""
-
-    def __init__(self, path, columns) -> None:
-        try:
-            import pyarrow.parquet  # noqa: F401
-        except ImportError:
-            raise ValueError(
-                "Parquet output needs the optional extra: pip install 'spinimpact[parquet]'"
-            ) from None
-        self.target = Path(path)
-        if self.target.is_dir():
-            raise ValueError(f"output {str(self.target)!r} is a directory")
-        if not self.target.parent.is_dir():
-            raise ValueError(f"the directory of the output {str(self.target)!r} does not exist")
-        fd, name = tempfile.mkstemp(
-            prefix=f".{self.target.name}.", suffix=".part", dir=self.target.parent
-        )
-        os.close(fd)
-        self.tmp, self.writer = Path(name), None
-
-    def write(self, data: dict[str, np.ndarray]) -> None:
-        import pyarrow as pa
-        import pyarrow.parquet as pq
-
-        table = pa.table({k: np.ascontiguousarray(v) for k, v in data.items()})
-        if self.writer is None:
-            self.writer = pq.ParquetWriter(self.tmp, table.schema)
-        self.writer.write_table(table)
-
-    def commit(self) -> None:
-        if self.writer is not None:
-            self.writer.close()
-            self.writer = None
-        os.chmod(self.tmp, 0o666 & ~_umask())
-        os.replace(self.tmp, self.target)
-
-    def discard(self) -> None:
-        if self.writer is not None:
-            self.writer.close()
-        self.tmp.unlink(missing_ok=True)
-
-
-class _NpyColumns:
-    """Streams chunks into one ``.npy`` file per column of a new directory.
-
-    Each chunk is appended with an ordinary file write after the ``.npy``
-    header (no memory map), so resident memory stays bounded by the chunk.
-    """
-
-    def __init__(self, path, columns, size: int) -> None:
-        self.target = Path(path)
-        if self.target.exists():
-            raise ValueError(f"output directory {str(self.target)!r} already exists")
-        if not self.target.parent.is_dir():
-            raise ValueError(f"the directory of the output {str(self.target)!r} does not exist")
-        self.tmp = Path(tempfile.mkdtemp(prefix=f".{self.target.name}.", dir=self.target.parent))
-        self.files = {}
-        for c in columns:
-            dtype = np.dtype(np.int8 if c == "regime" else np.float64)
-            f = open(self.tmp / f"{c}.npy", "wb")  # noqa: SIM115 (closed in commit/discard)
-            np.lib.format.write_array_header_1_0(
-                f,
-                {
-                    "descr": np.lib.format.dtype_to_descr(dtype),
-                    "fortran_order": False,
-                    "shape": (size,),
-                },
-            )
-            self.files[c] = (f, dtype)
-
-    def write(self, data: dict[str, np.ndarray]) -> None:
-        for c, values in data.items():
-            f, dtype = self.files[c]
-            f.write(np.ascontiguousarray(values, dtype=dtype).tobytes())
-
-    def _close(self) -> None:
-        for f, _ in self.files.values():
-            f.close()
-        self.files = {}
-
-    def commit(self) -> None:
-        self._close()
-        os.chmod(self.tmp, 0o777 & ~_umask())
-        for child in self.tmp.iterdir():
-            os.chmod(child, 0o666 & ~_umask())
-        os.replace(self.tmp, self.target)
-
-    def discard(self) -> None:
-        self._close()
-        if self.tmp.exists():
-            shutil.rmtree(self.tmp)
+    def write(self, data: dict) -> None:
+        pass

@@ -1,0 +1,170 @@
+"""Readers of batch input: a CSV or Parquet file as a header, then chunks of rows.
+
+Each reader is a generator that first yields the header (a list of column names)
+and then one :class:`Chunk` per ``chunk_size`` rows, so memory stays bounded by
+the chunk whatever the file size.
+"""
+
+from __future__ import annotations
+
+import csv
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._validation import require
+
+__all__ = ["SUFFIXES", "BatchError", "Chunk", "csv_chunks", "file_format", "parquet_chunks"]
+
+#: Accepted file suffixes and their formats.
+SUFFIXES = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
+
+
+class BatchError(ValueError):
+    """A row or the header of a batch input cannot be used; the message names where."""
+
+
+@dataclass
+class Chunk:
+    """Rows ``first .. first + n - 1`` of the input."""
+
+    first: int  #: 1-based number of the first data row
+    columns: dict[str, np.ndarray]  #: input cells: str (CSV) or typed (Parquet)
+    empty: dict[str, np.ndarray]  #: True where a cell is empty / null
+    lines: np.ndarray | None  #: CSV line number of each row (None for Parquet)
+    messages: np.ndarray  #: problems found while reading ('' where none)
+    arrow: dict[str, Any] | None = None  #: Parquet input: the typed columns, passed through
+
+    def where(self, i: int, column: str | None = None) -> str:
+        """``"row 5 (line 6), column vy"``: where row ``i`` of the chunk is in the file."""
+        line = f" (line {self.lines[i]})" if self.lines is not None else ""
+        return f"row {self.first + i}{line}" + (f", column {column}" if column else "")
+
+
+def file_format(path: Path, role: str) -> str:
+    """The format of ``path`` by its suffix (see :data:`SUFFIXES`).
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        The file.
+    role : str
+        ``"input"`` or ``"output"``, for the message.
+
+    Returns
+    -------
+    str
+        ``"csv"`` or ``"parquet"``.
+
+    Raises
+    ------
+    ValueError
+        For any other suffix.
+    """
+    fmt = SUFFIXES.get(path.suffix.lower())
+    if fmt is None:
+        raise ValueError(f"the {role} file must end in .csv, .parquet or .pq, got {str(path)!r}")
+    return fmt
+
+
+def csv_chunks(
+    path: Path, chunk_size: int, skip: bool, advance: Callable[[int], None]
+) -> Iterator[Any]:
+    """The header, then chunks of rows of a CSV file (text cells, stripped).
+
+    Parameters
+    ----------
+    path : pathlib.Path
+        A UTF-8 CSV file (a byte-order mark is allowed) with a header line.
+    chunk_size : int
+        Rows per chunk.
+    skip : bool
+        Whether a row with the wrong number of fields is kept, padded, with its
+        problem in :attr:`Chunk.messages` (``True``) or stops the run (``False``).
+    advance : callable
+        Called with the number of characters read so far, after each chunk.
+
+    Raises
+    ------
+    BatchError
+        For an empty file, or (``skip=False``) a row of the wrong length, naming
+        its row and line.
+    """
+    size = 0
+
+    def lines(f: Any) -> Iterator[str]:
+        nonlocal size
+        for line in f:
+            size += len(line)
+            yield line
+
+    with open(path, newline="", encoding="utf-8-sig") as f:
+        reader = csv.reader(lines(f))
+        try:
+            header = [h.strip() for h in next(reader)]
+        except StopIteration:
+            raise BatchError(
+                f"{path} is empty: expected a header with columns vx, vy, omega"
+            ) from None
+        yield header
+        first = 1
+        while True:
+            rows, numbers, problems = [], [], []
+            for record in reader:
+                if not record or (len(record) == 1 and not record[0].strip()):
+                    continue  # blank line
+                where = f"row {first + len(rows)} (line {reader.line_num})"
+                if len(record) != len(header):
+                    message = f"{where}: expected {len(header)} fields, got {len(record)}"
+                    if not skip:
+                        raise BatchError(message)
+                    record = (record + [""] * len(header))[: len(header)]
+                    problems.append(message)
+                else:
+                    problems.append("")
+                rows.append(record)
+                numbers.append(reader.line_num)
+                if len(rows) == chunk_size:
+                    break
+            if not rows:
+                advance(size)
+                return
+            cells = np.array(rows, dtype=str).reshape(len(rows), len(header))
+            columns = {h: cells[:, j] for j, h in enumerate(header)}
+            empty = {h: np.char.strip(c) == "" for h, c in columns.items()}
+            columns = {h: np.char.strip(c) for h, c in columns.items()}
+            advance(size)
+            yield Chunk(first, columns, empty, np.array(numbers), np.array(problems, dtype=object))
+            first += len(rows)
+
+
+def parquet_chunks(
+    path: Path, chunk_size: int, skip: bool, advance: Callable[[int], None]
+) -> Iterator[Any]:
+    """The header, then chunks of rows of a Parquet file (typed cells, nulls marked empty).
+
+    Same parameters as :func:`csv_chunks`; ``advance`` gets the number of rows read.
+
+    Raises
+    ------
+    ImportError
+        Without pyarrow, naming the ``[parquet]`` extra.
+    """
+    pq = require("pyarrow.parquet", "Parquet files")
+    file = pq.ParquetFile(path)
+    yield list(file.schema_arrow.names)
+    first, done = 1, 0
+    for batch in file.iter_batches(batch_size=chunk_size):
+        columns, empty, arrow = {}, {}, {}
+        for j, name in enumerate(batch.schema.names):
+            col = batch.column(j)
+            arrow[name] = col
+            empty[name] = col.is_null().to_numpy(zero_copy_only=False)
+            columns[name] = col.to_numpy(zero_copy_only=False)
+        done += batch.num_rows
+        advance(done)
+        yield Chunk(first, columns, empty, None, np.full(batch.num_rows, "", dtype=object), arrow)
+        first += batch.num_rows
