@@ -169,12 +169,28 @@ def test_calibration_hits_the_target(make, target, speed):
             lambda: simulate(BALL, [1.0, 2.0], -3.0, 0.0, mu=0.1, contact=LAWS["linear"]),
             "single number",
         ),
-        (lambda: simulate(BALL, 1.0, -3.0, 0.0, mu=0.1, contact="hertz"), "contact must be"),
         (lambda: simulate(BALL, 1.0, -3.0, 0.0, mu=0.1, contact=LAWS["linear"], rtol=1.0), "rtol"),
     ],
 )
 def test_bad_input(build, message):
     with pytest.raises(ValueError, match=message):
+        build()
+
+
+@pytest.mark.parametrize(
+    ("build", "message"),
+    [
+        # a wrong type is a TypeError (the package's validation vocabulary)
+        (lambda: simulate(BALL, 1.0, -3.0, 0.0, mu=0.1, contact="hertz"), "contact must be"),
+        (lambda: simulate(None, 1.0, -3.0, 0.0, mu=0.1, contact=LAWS["linear"]), "body must be"),
+        (lambda: simulate(BALL, "1", -3.0, 0.0, mu=0.1, contact=LAWS["linear"]), "vx must be"),
+        (lambda: LinearContact(stiffness="stiff"), "stiffness must be"),
+        (lambda: HertzContact(1e9, None, 0.02), "poisson_ratio must be"),
+        (lambda: LAWS["linear"].restitution(0.05, 1.0, rtol="tight"), "rtol must be"),
+    ],
+)
+def test_wrong_type(build, message):
+    with pytest.raises(TypeError, match=message):
         build()
 
 

@@ -19,11 +19,6 @@ PRESETS: dict[str, float] = {
 }
 
 
-def _number(name: str, value: object) -> float | np.ndarray:
-    arr = validated(name, value)
-    return float(arr) if arr.ndim == 0 else arr
-
-
 @dataclass(frozen=True, eq=False)
 class Body:
     """A rigid body that touches the surface at radius ``R`` from its centre.
@@ -67,8 +62,9 @@ class Body:
     _zeta: float | np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
-        for name in ("mass", "radius", "gyration"):
-            object.__setattr__(self, name, _number(name, getattr(self, name)))
+        for name in ("mass", "radius", "gyration"):  # TypeError or ValueError, named
+            arr = validated(name, getattr(self, name))
+            object.__setattr__(self, name, float(arr) if arr.ndim == 0 else arr)
         with np.errstate(over="ignore"):
             zeta = 1.0 + (self.radius / self.gyration) ** 2
         if np.any(zeta > MAX_ZETA):

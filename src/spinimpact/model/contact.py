@@ -1,46 +1,87 @@
-"""Compliant contact laws for :func:`spinimpact.dynamics.simulate`.
+r"""Compliant normal contact laws for :func:`spinimpact.dynamics.simulate`.
 
 Each law is a small immutable object with a signed force ``N(delta, delta_dot)``
-(compression ``delta`` into the surface, ``delta_dot = -v``), built from
-physical constants or calibrated to a target restitution at a given speed.
-The force kernels live in :mod:`spinimpact.core.contact`.
+in N of the compression ``delta`` (m, into the surface) and its rate
+``delta_dot = -v_y`` (m/s), built from physical constants or calibrated to a
+target restitution at a given speed. The force kernels and the integrator live
+in :mod:`spinimpact.core.contact`; this module validates and packages, and does
+not depend on :mod:`spinimpact.model.dynamics`.
+
+References
+----------
+.. [1] H. Hertz, "Ueber die Berührung fester elastischer Körper", Journal für
+   die reine und angewandte Mathematik 92 (1882) 156-171.
+.. [2] K. H. Hunt, F. R. E. Crossley, "Coefficient of restitution interpreted as
+   damping in vibroimpact", Journal of Applied Mechanics 42 (1975) 440-445.
+.. [3] W. J. Stronge, *Impact Mechanics*, Cambridge University Press,
+   Cambridge (2000).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, is_dataclass
 from typing import Any
 
 import numpy as np
 
-from .._validation import as_real_array, check
+from .._validation import as_real_array, check, scalar, setting
 from ..core import contact as kernels
 from .restitution import TabulatedRestitution
+from .result import Array, Result, freeze
 
 __all__ = ["ContactLaw", "LinearContact", "HertzContact", "HuntCrossleyContact", "NormalImpact"]
 
+#: What each contact-law parameter must be beyond one finite real number and the shared
+#: rules of its name (``mass``, ``radius``, ``kappa``): (predicate, "NAME must be ...").
+_RULES = {
+    "stiffness": (lambda x: x > 0, "> 0"),
+    "damping": (lambda x: x >= 0, ">= 0"),
+    "alpha": (lambda x: x >= 0, ">= 0"),
+    "exponent": (lambda x: (x >= 1) & (x <= 10), "in [1, 10]"),
+    "youngs_modulus": (lambda x: x > 0, "> 0"),
+    "poisson_ratio": (lambda x: (x > -1) & (x <= 0.5), "in (-1, 0.5]"),
+    "kappa": (lambda x: x > 0, "in (0, 1]"),  # a target restitution: 0 cannot be reached
+}
 
-def _param(name: str, value: Any, ok, rule: str) -> float:
-    arr = as_real_array(name, value)
-    if arr.ndim:
-        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
-    check(name, arr, ok, rule)
-    return float(arr)
+
+def _parameter(name: str, value: Any) -> float:
+    """One number (:func:`~spinimpact._validation.scalar`, with the shared rules of
+    its name; a ``speed`` obeys those of a mass: ``> 0``) obeying ``_RULES[name]``."""
+    x = scalar(name, value, "mass" if name == "speed" else None,
+               why="a contact law takes one value of each parameter")  # fmt: skip
+    if name in _RULES:
+        ok, rule = _RULES[name]
+        check(name, np.float64(x), ok, rule)
+    return x
 
 
-@dataclass(frozen=True)
-class NormalImpact:
-    """The normal (frictionless) part of a compliant impact, at one speed."""
+def _tolerance(rtol: Any) -> float:
+    """The integrator's relative tolerance, a setting in ``[1e-13, 1e-3]``."""
+    tol = setting("rtol", rtol, rule="a number in [1e-13, 1e-3]")
+    check("rtol", np.float64(tol), lambda x: (x >= 1e-13) & (x <= 1e-3), "in [1e-13, 1e-3]")
+    return tol
 
-    speed: float  #: impact speed |vy|, m/s
-    restitution: float  #: Newton's -v+/v-
-    duration: float  #: contact time, s
-    peak_force: float  #: N
-    max_compression: float  #: m
+
+@dataclass(frozen=True, eq=False)
+class NormalImpact(Result):
+    """The normal (frictionless, spinless) part of a compliant impact at one speed
+    (:meth:`ContactLaw.normal_impact`)."""
+
+    speed: Array  #: impact speed |vy|, m/s
+    restitution: Array  #: Newton's -v+/v- (eq. 1.1)
+    duration: Array  #: contact time, s
+    peak_force: Array  #: largest normal force, N
+    max_compression: Array  #: largest compression, m
 
 
 class ContactLaw:
-    """Base class of the compliant normal contact laws."""
+    """Base class of the compliant normal contact laws.
+
+    A law gives the signed force ``force(delta, delta_dot)`` in N (the integrator
+    applies ``max(N, 0)``), a ``time_scale(mass, speed)`` in s of the order of
+    the contact duration, and the power ``separation_exponent`` with which the
+    force vanishes at separation.
+    """
 
     def force(self, delta: float, delta_dot: float) -> float:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -51,26 +92,46 @@ class ContactLaw:
     #: power with which the force vanishes at separation (N ~ delta^n)
     separation_exponent: float = 1.0
 
-    def normal_impact(self, mass: float, speed: float, *, rtol: float = 1e-10) -> NormalImpact:
-        """Drop without spin or friction at ``speed``: the law's restitution,
-        contact duration, peak force and largest compression."""
-        from .dynamics import simulate
+    def to_dict(self) -> dict[str, Any]:
+        """The law's name and parameters as plain Python values."""
+        names = [f.name for f in fields(self)] if is_dataclass(self) else []
+        return {"law": type(self).__name__, **{n: getattr(self, n) for n in names}}
 
-        m = _param("mass", mass, lambda x: x > 0, "> 0")
-        v = _param("speed", speed, lambda x: x > 0, "> 0")
-        sim = simulate(None, 0.0, -v, 0.0, mu=0.0, contact=self, rtol=rtol, _mass=m)
-        return NormalImpact(v, float(sim.newton_restitution), sim.contact_duration,
-                            sim.peak_force, sim.max_compression)  # fmt: skip
+    def normal_impact(self, mass: float, speed: float, *, rtol: float = 1e-10) -> NormalImpact:
+        """A drop without spin or friction: the law's restitution, contact
+        duration, peak force and largest compression.
+
+        Parameters
+        ----------
+        mass : float
+            Mass of the body, kg, ``> 0``.
+        speed : float
+            Impact speed ``|vy|``, m/s, ``> 0``.
+        rtol : float
+            Relative tolerance of the integrator, in ``[1e-13, 1e-3]``.
+
+        Returns
+        -------
+        NormalImpact
+        """
+        m, v, tol = _parameter("mass", mass), _parameter("speed", speed), _tolerance(rtol)
+        run = kernels.integrate_normal_impact(
+            self.force, m, v, time_scale=self.time_scale(m, v), rtol=tol,
+            exponent=self.separation_exponent,
+        )  # fmt: skip
+        values = (v, run.newton_restitution, run.t1, run.peak_force, run.max_compression)
+        return NormalImpact(*(freeze(x) for x in values))
 
     def restitution(self, mass: float, speed: float, *, rtol: float = 1e-10) -> float:
-        """Newton's restitution ``kappa`` this law gives at impact ``speed`` (m/s)."""
-        return self.normal_impact(mass, speed, rtol=rtol).restitution
+        """Newton's restitution ``kappa`` this law gives a body of ``mass`` (kg) at
+        impact ``speed`` (m/s)."""
+        return float(self.normal_impact(mass, speed, rtol=rtol).restitution)
 
     def restitution_model(
         self, mass: float, speeds: Any, *, rtol: float = 1e-10
     ) -> TabulatedRestitution:
-        """``kappa(|vy|)`` of this law for a body of ``mass``, tabulated at ``speeds``
-        (m/s) and interpolated between them; pass it to ``solve(kappa=...)``.
+        """``kappa(|vy|)`` of this law for a body of ``mass`` (kg), tabulated at
+        ``speeds`` (m/s) and interpolated between them; pass it to ``solve(kappa=...)``.
 
         Examples
         --------
@@ -89,28 +150,31 @@ class ContactLaw:
 
 @dataclass(frozen=True)
 class LinearContact(ContactLaw):
-    """Kelvin-Voigt spring and dashpot, ``N = k delta + c delta_dot`` (never tensile).
-
-    Its restitution does not depend on the speed.
+    r"""Linear spring-dashpot (Kelvin-Voigt) contact; its restitution does not
+    depend on the speed.
 
     Parameters
     ----------
     stiffness : float
-        ``k`` in N/m, ``> 0``.
+        ``k``, N/m, ``> 0``.
     damping : float
-        ``c`` in N s/m, ``>= 0``.
+        ``c``, N s/m, ``>= 0``.
+
+    Notes
+    -----
+    .. math:: N = \max(k \delta + c \dot\delta,\ 0)
+
+    The force never pulls: the contact ends when ``N`` falls to zero, which for
+    ``c > 0`` is before ``delta`` returns to zero. The law is linear, so the
+    restitution depends on the damping ratio ``c/(2 sqrt(k m))`` only [3]_.
     """
 
     stiffness: float
     damping: float = 0.0
 
     def __post_init__(self) -> None:
-        object.__setattr__(
-            self, "stiffness", _param("stiffness", self.stiffness, lambda x: x > 0, "> 0")
-        )
-        object.__setattr__(
-            self, "damping", _param("damping", self.damping, lambda x: x >= 0, ">= 0")
-        )
+        for name in ("stiffness", "damping"):
+            object.__setattr__(self, name, _parameter(name, getattr(self, name)))
 
     def force(self, delta: float, delta_dot: float) -> float:
         return kernels.linear_force(delta, delta_dot, self.stiffness, self.damping)
@@ -122,10 +186,9 @@ class LinearContact(ContactLaw):
 
     @classmethod
     def calibrated(cls, *, stiffness: float, kappa: float, mass: float) -> LinearContact:
-        """The damping that gives restitution ``kappa`` for a body of ``mass``
-        (any speed: the law is linear)."""
-        k = _param("kappa", kappa, lambda x: (x > 0) & (x <= 1), "in (0, 1]")
-        m = _param("mass", mass, lambda x: x > 0, "> 0")
+        """The damping that gives restitution ``kappa`` in ``(0, 1]`` for a body of
+        ``mass`` (kg), at any speed (the law is linear); ``stiffness`` in N/m."""
+        k, m = _parameter("kappa", kappa), _parameter("mass", mass)
         stiffness = cls(stiffness).stiffness  # validated before use
         c_crit = 2.0 * np.sqrt(stiffness * m)
         return _calibrate(lambda c: cls(stiffness, c * c_crit), k, m, 1.0)
@@ -133,19 +196,26 @@ class LinearContact(ContactLaw):
 
 @dataclass(frozen=True)
 class HuntCrossleyContact(ContactLaw):
-    """Hunt-Crossley, ``N = k delta^n (1 + 3/2 alpha delta_dot)`` (never tensile).
-
-    Dissipation grows with the impact speed, so ``kappa`` falls with speed
-    (approximately ``1 - alpha v`` for small ``alpha v``).
+    r"""Hunt-Crossley contact: a power-law spring with damping proportional to it,
+    so ``kappa`` falls with the impact speed.
 
     Parameters
     ----------
     stiffness : float
-        ``k`` in N/m^n, ``> 0``.
+        ``k``, N/m^n, ``> 0``.
     exponent : float
-        ``n >= 1``: 3/2 for Hertz sphere-on-plane contact, 1 for a linear spring.
+        ``n`` in ``[1, 10]``: 3/2 for Hertz sphere-on-plane contact, 1 for a linear spring.
     alpha : float
-        Damping factor in s/m, ``>= 0``.
+        Damping factor, s/m, ``>= 0``.
+
+    Notes
+    -----
+    .. math:: N = \max\left(k \delta^n \left(1 + \tfrac{3}{2}\alpha\dot\delta\right),\ 0\right)
+
+    Hunt and Crossley [2]_ made the damping proportional to the elastic force so
+    that the force is continuous at first touch; the restitution then depends on
+    ``alpha v`` only and is about ``1 - alpha v`` for small ``alpha v``. With
+    ``n = 3/2`` and ``alpha = 0`` this is Hertz's elastic law [1]_.
     """
 
     stiffness: float
@@ -153,15 +223,8 @@ class HuntCrossleyContact(ContactLaw):
     alpha: float = 0.0
 
     def __post_init__(self) -> None:
-        object.__setattr__(
-            self, "stiffness", _param("stiffness", self.stiffness, lambda x: x > 0, "> 0")
-        )
-        object.__setattr__(
-            self,
-            "exponent",
-            _param("exponent", self.exponent, lambda x: (x >= 1) & (x <= 10), "in [1, 10]"),
-        )
-        object.__setattr__(self, "alpha", _param("alpha", self.alpha, lambda x: x >= 0, ">= 0"))
+        for name in ("stiffness", "exponent", "alpha"):
+            object.__setattr__(self, name, _parameter(name, getattr(self, name)))
 
     def force(self, delta: float, delta_dot: float) -> float:
         return kernels.hunt_crossley_force(
@@ -180,50 +243,63 @@ class HuntCrossleyContact(ContactLaw):
     def calibrated(
         cls, *, stiffness: float, kappa: float, mass: float, speed: float, exponent: float = 1.5
     ) -> HuntCrossleyContact:
-        """The ``alpha`` that gives restitution ``kappa`` at impact ``speed``."""
-        k = _param("kappa", kappa, lambda x: (x > 0) & (x <= 1), "in (0, 1]")
-        m = _param("mass", mass, lambda x: x > 0, "> 0")
-        v = _param("speed", speed, lambda x: x > 0, "> 0")
+        """The ``alpha`` (s/m) that gives restitution ``kappa`` in ``(0, 1]`` to a
+        body of ``mass`` (kg) at impact ``speed`` (m/s)."""
+        k, m, v = _parameter("kappa", kappa), _parameter("mass", mass), _parameter("speed", speed)
         law = cls(stiffness, exponent)  # validated before use
         return _calibrate(lambda a: cls(law.stiffness, law.exponent, a / v), k, m, v)
 
 
 @dataclass(frozen=True, init=False, repr=False)
 class HertzContact(HuntCrossleyContact):
-    """Elastic Hertz contact of a sphere on a rigid plane, ``N = 4/3 E* sqrt(R) delta^{3/2}``,
-    with optional Hunt-Crossley damping ``alpha``.
-
-    Built from material constants: ``E* = E/(1 - nu^2)``. The Hertz law is for
-    point contact (a sphere); a cylinder or disk pressed along a line has no
-    closed power law - use :class:`LinearContact` or :class:`HuntCrossleyContact`
-    with a fitted stiffness there.
+    r"""Elastic Hertz contact of a sphere on a rigid plane, built from material
+    constants, with optional Hunt-Crossley damping.
 
     Parameters
     ----------
     youngs_modulus : float
-        ``E`` in Pa, ``> 0``.
+        ``E``, Pa, ``> 0``.
     poisson_ratio : float
         ``nu`` in ``(-1, 0.5]``.
     radius : float
-        Radius of curvature at the contact, m (the body's contact radius).
+        Radius of curvature at the contact ``R``, m (the body's contact radius).
     alpha : float
         Hunt-Crossley damping factor, s/m (``0``: elastic, ``kappa = 1``).
+
+    Notes
+    -----
+    .. math::
+
+        N = \tfrac{4}{3} E^* \sqrt{R}\, \delta^{3/2}
+            \left(1 + \tfrac{3}{2}\alpha\dot\delta\right), \qquad
+        E^* = \frac{E}{1 - \nu^2}
+
+    Hertz's law [1]_ is for point contact (a sphere); a cylinder or disk pressed
+    along a line has no closed power law - use :class:`LinearContact` or
+    :class:`HuntCrossleyContact` with a fitted stiffness there. The damping is
+    Hunt and Crossley's [2]_.
     """
 
     def __init__(
         self, youngs_modulus: float, poisson_ratio: float, radius: float, alpha: float = 0.0
     ):
-        e = _param("youngs_modulus", youngs_modulus, lambda x: x > 0, "> 0")
-        nu = _param("poisson_ratio", poisson_ratio, lambda x: (x > -1) & (x <= 0.5), "in (-1, 0.5]")
-        r = _param("radius", radius, lambda x: x > 0, "> 0")
+        e = _parameter("youngs_modulus", youngs_modulus)
+        nu = _parameter("poisson_ratio", poisson_ratio)
+        r = _parameter("radius", radius)
         object.__setattr__(self, "youngs_modulus", e)
         object.__setattr__(self, "poisson_ratio", nu)
         object.__setattr__(self, "radius", r)
         super().__init__(float(kernels.hertz_stiffness(e, nu, r)), 1.5, alpha)
 
     def duration(self, mass: float, speed: float) -> float:
-        """Classical elastic Hertz contact duration (ignores ``alpha``)."""
+        """Classical elastic Hertz contact duration in s (ignores ``alpha``) of a
+        body of ``mass`` (kg) at impact ``speed`` (m/s)."""
         return float(kernels.hertz_duration(mass, speed, self.stiffness))
+
+    def to_dict(self) -> dict[str, Any]:
+        """The material constants, the damping and the resulting stiffness."""
+        names = ("youngs_modulus", "poisson_ratio", "radius", "alpha", "stiffness", "exponent")
+        return {"law": type(self).__name__, **{n: getattr(self, n) for n in names}}
 
     def __repr__(self) -> str:
         return (

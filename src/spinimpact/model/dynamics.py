@@ -1,31 +1,48 @@
-"""``simulate()``: the impact in time with a compliant normal contact law."""
+r"""``simulate()``: the impact in time with a compliant normal contact law.
+
+The integration is :func:`spinimpact.core.contact.integrate_contact`; this module
+validates the input and packages the run as a :class:`Simulation`, one of the
+package's :class:`~spinimpact.model.result.Result` objects.
+"""
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
 from .. import core
-from .._validation import as_real_array, validated
+from .._validation import scalar
 from ..core import contact as kernels
 from .body import Body
-from .contact import ContactLaw
+from .contact import ContactLaw, _tolerance
 from .impact import Impact, State, solve
+from .result import Result, freeze
 
 __all__ = ["Simulation", "simulate"]
 
+_ONE = "simulate() integrates one impact at a time (use solve() for arrays)"
+
 
 @dataclass(frozen=True, eq=False)
-class Simulation:
+class Simulation(Result):
     """Result of :func:`simulate`: the rebound, the restitution the contact law
     produced, and the time series of the contact.
 
+    One simulation is one impact over time: ``shape`` is that of the time series
+    ``t``, :meth:`columns` gives one row per sample (the body, the incidence
+    ``before_*`` and the rebound ``after_*`` repeated on every row) and the
+    result is not indexable by impact.
+
     Attributes
     ----------
+    body : Body
+    mu : float
+        Coulomb friction coefficient.
+    contact : ContactLaw
     before, after : State
+        Incidence and rebound: ``vx, vy`` in m/s, ``omega`` in rad/s.
     newton_restitution, poisson_restitution, energetic_restitution : float
         ``-v+/v-`` (eq. 1.1); ``(tau1 - tau0)/tau0`` with ``tau0`` the impulse at
         the end of compression (eq. 1.2); ``sqrt(-W_r^n/W_c^n)`` from the works of
@@ -34,15 +51,19 @@ class Simulation:
         s, N, m. The compression is largest at the end of compression (an event);
         the peak force is the largest over the output samples.
     tau0, tau1, tau_star : float
-        Normal impulse at the end of compression, of the contact, and when the
-        slip stopped (``nan`` if it never did).
+        Normal impulse in N s at the end of compression, of the contact, and when
+        the slip stopped (``nan`` if it never did).
     stick_time : float
-        Time at which the slip stopped (``nan`` if never).
+        Time in s at which the slip stopped (``nan`` if never).
     tangential_impulse, impulse_ratio, dissipated_energy : float
-        ``f1``, ``f1/tau1`` and ``E^- - E^+``.
+        ``f1`` in N s, ``f1/tau1``, and ``E^- - E^+`` in J.
     t, normal_force, friction_force, vx, vy, omega, slip, tau, compression : ndarray
-        Time series at the integrator's steps (the stick event is a sample).
+        Time series at the integrator's steps (the stick event is a sample): s, N,
+        N, m/s, m/s, rad/s, m/s, N s, m.
     """
+
+    _per_impact = False  # one impact over time: not indexable by impact
+    _shape_field = "t"
 
     body: Body
     mu: float
@@ -72,6 +93,11 @@ class Simulation:
     tau: np.ndarray
     compression: np.ndarray
 
+    def columns(self) -> dict[str, np.ndarray]:
+        """The time series as flat columns of length ``len(t)``; the body's
+        columns and the ``before_*``/``after_*`` velocities are repeated on every row."""
+        return {k: np.broadcast_to(v, self.shape) for k, v in super().columns().items()}
+
     def rigid(self) -> Impact:
         """The rigid-body closed form with ``kappa`` set to this law's Newton
         restitution: Keller's result says the rebound must agree."""
@@ -80,18 +106,8 @@ class Simulation:
                      kappa=min(max(self.newton_restitution, 0.0), 1.0))  # fmt: skip
 
 
-def _scalar(name: str, value: Any, rules: str | None = None) -> float:
-    arr = validated(name, value, rules)
-    if arr.ndim:
-        raise ValueError(
-            f"{name} must be a single number: simulate() integrates one impact at a time "
-            "(use solve() for arrays)"
-        )
-    return float(arr)
-
-
 def simulate(
-    body: Body | None,
+    body: Body,
     vx: float,
     vy: float,
     omega: float,
@@ -99,28 +115,48 @@ def simulate(
     mu: float,
     contact: ContactLaw,
     rtol: float = 1e-10,
-    _mass: float | None = None,
 ) -> Simulation:
-    """Integrate one impact in time with a compliant normal force and Coulomb friction.
-
-    The equations of motion (2.4) with ``N = contact.force(delta, delta_dot)``
-    (never tensile; the contact ends when it falls to zero) and
-    ``F = -mu N sign(u)`` while the contact point slips; when ``u`` reaches zero
-    (located as an event to integrator precision) the contact point sticks and
-    ``F = 0`` from then on, as in the paper. Tangential compliance is ignored.
+    r"""Integrate one impact in time with a compliant normal force and Coulomb friction.
 
     Parameters
     ----------
     body : Body
+        One body (scalar mass, radius and gyration).
     vx, vy, omega : float
-        Incidence, ``vy < 0``.
+        Incidence: centre velocity in m/s (``vy < 0``) and spin in rad/s.
     mu : float
-        Coulomb friction, ``>= 0``.
+        Coulomb friction coefficient, ``>= 0``.
     contact : ContactLaw
         :class:`LinearContact`, :class:`HertzContact` or :class:`HuntCrossleyContact`.
     rtol : float
         Relative tolerance of the integrator, in ``[1e-13, 1e-3]``; errors against
         the rigid closed form shrink with it.
+
+    Returns
+    -------
+    Simulation
+
+    Raises
+    ------
+    TypeError
+        If ``body`` is not a :class:`Body`, ``contact`` not a contact law, or a
+        number is not a real number.
+    ValueError
+        If a number is out of range or an array.
+
+    Notes
+    -----
+    The equations of motion (2.4),
+
+    .. math::
+
+        m \dot v_x = F, \qquad m \dot v_y = N, \qquad J \dot\omega = R F,
+
+    with ``N = max(contact.force(delta, -v_y), 0)`` (the contact ends when it
+    falls to zero) and ``F = -mu N sign(u)`` while the contact point slips; when
+    ``u = v_x + R omega`` reaches zero (located as an event to integrator
+    precision) the contact point sticks and ``F = 0`` from then on, as in the
+    paper. Tangential compliance is ignored.
 
     Examples
     --------
@@ -134,66 +170,49 @@ def simulate(
     True
     """
     if not isinstance(contact, ContactLaw):
-        raise ValueError(f"contact must be a spinimpact contact law, got {type(contact).__name__}")
-    if body is None and _mass is not None:  # the normal drop used by ContactLaw.normal_impact
-        body = Body(mass=_mass, radius=1.0, gyration=1.0)
+        raise TypeError(f"contact must be a spinimpact contact law, got {type(contact).__name__}")
     if not isinstance(body, Body):
-        raise ValueError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    m = _scalar("mass", body.mass)
-    r = _scalar("radius", body.radius)
-    j = _scalar("inertia", body.inertia, "mass")  # positive, like a mass
+        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    m = scalar("mass", body.mass, why=_ONE)
+    r = scalar("radius", body.radius, why=_ONE)
+    j = scalar("inertia", body.inertia, "mass", why=_ONE)  # positive, like a mass
     vx_, vy_, om_, mu_ = (
-        _scalar(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
+        scalar(n, v, why=_ONE) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
-    tol = float(as_real_array("rtol", rtol))
-    if not 1e-13 <= tol <= 1e-3:
-        raise ValueError(f"rtol must be in [1e-13, 1e-3], got {tol!r}")
-
     run = kernels.integrate_contact(
         contact.force, m, r, j, mu_, vx_, vy_, om_,
-        time_scale=contact.time_scale(m, abs(vy_)), rtol=tol,
+        time_scale=contact.time_scale(m, abs(vy_)), rtol=_tolerance(rtol),
         exponent=contact.separation_exponent,
     )  # fmt: skip
-    t, y, stuck = run["t"], run["y"], run["stuck"]
-    delta, vxs, vys, oms, tau, f, work_n = y
-    normal = np.maximum([contact.force(d, -v) for d, v in zip(delta, vys, strict=True)], 0.0)
-    slip = np.where(stuck, 0.0, vxs + r * oms)
-    ratio = np.where(stuck, 0.0, -mu_ * np.sign(vxs + r * oms))
-    end = y[:, -1]
-    tau0, tau1 = run["tau0"], end[4]
     e0 = float(core.kinetic_energy(vx_, vy_, om_, m, j))
-    e1 = float(core.kinetic_energy(end[1], end[2], end[3], m, j))
+    e1 = float(core.kinetic_energy(run.vx[-1], run.vy[-1], run.omega[-1], m, j))
     # Restitution measured on the simulated process (tau0 at the event v = 0, tau1
     # the integrated impulse), not by core.restitution_coefficients' closed tau0.
-    w_c, w_r = run["work_n0"], end[6] - run["work_n0"]
-    t_star = run["t_star"]
-    tau_star = float(np.interp(t_star, t, tau)) if not math.isnan(t_star) else math.nan
+    t_star = run.t_star
+    tau_star = float(np.interp(t_star, run.t, run.tau)) if not math.isnan(t_star) else math.nan
+    tau1, f1 = float(run.tau[-1]), float(run.tangential_impulse[-1])
     return Simulation(
         body=body,
         mu=mu_,
         contact=contact,
-        before=State(vx_, vy_, om_),
-        after=State(end[1], end[2], end[3]),
-        newton_restitution=-end[2] / vy_,
-        poisson_restitution=(tau1 - tau0) / tau0,
-        energetic_restitution=math.sqrt(max(-w_r / w_c, 0.0)),
-        contact_duration=run["t1"],
-        peak_force=float(normal.max()),
-        max_compression=float(np.interp(run["t0"], t, delta)),  # delta is largest where v = 0
-        tau0=tau0,
+        before=State(*(freeze(x) for x in (vx_, vy_, om_))),
+        after=State(*(freeze(x[-1]) for x in (run.vx, run.vy, run.omega))),
+        newton_restitution=run.newton_restitution,
+        poisson_restitution=run.poisson_restitution,
+        energetic_restitution=run.energetic_restitution,
+        contact_duration=run.t1,
+        peak_force=run.peak_force,
+        max_compression=run.max_compression,
+        tau0=run.tau0,
         tau1=tau1,
         tau_star=tau_star,
         stick_time=t_star,
-        tangential_impulse=end[5],
-        impulse_ratio=end[5] / tau1,
+        tangential_impulse=f1,
+        impulse_ratio=f1 / tau1,
         dissipated_energy=e0 - e1,
-        t=t,
-        normal_force=normal,
-        friction_force=ratio * normal,
-        vx=vxs,
-        vy=vys,
-        omega=oms,
-        slip=slip,
-        tau=tau,
-        compression=delta,
+        **{name: freeze(getattr(run, name)) for name in _SERIES},
     )
+
+
+#: The time series of :class:`Simulation`, named as in :class:`~spinimpact.core.contact.ContactRun`.
+_SERIES = ("t", "normal_force", "friction_force", "vx", "vy", "omega", "slip", "tau", "compression")

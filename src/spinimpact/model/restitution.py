@@ -14,16 +14,12 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .._validation import as_real_array, check, validated
+from .._validation import as_real_array, check, scalar, setting, validated
 
 __all__ = ["RestitutionModel", "ConstantRestitution", "TabulatedRestitution", "STANDARD_GRAVITY"]
 
 #: Standard gravity in m/s^2, used to turn drop heights into impact speeds.
 STANDARD_GRAVITY = 9.80665
-
-
-def _kappa(name: str, value: object) -> np.ndarray:
-    return validated(name, value, "kappa")
 
 
 class RestitutionModel:
@@ -34,7 +30,7 @@ class RestitutionModel:
 
 
 class ConstantRestitution(RestitutionModel):
-    """The same ``kappa`` at every impact speed.
+    """The same ``kappa`` (one number in ``[0, 1]``) at every impact speed.
 
     Examples
     --------
@@ -43,7 +39,7 @@ class ConstantRestitution(RestitutionModel):
     """
 
     def __init__(self, kappa: float) -> None:
-        self.kappa = float(_kappa("kappa", kappa))
+        self.kappa = scalar("kappa", kappa)
 
     def __call__(self, speed: np.ndarray) -> np.ndarray:
         return np.full(np.shape(speed), self.kappa)
@@ -76,7 +72,7 @@ class TabulatedRestitution(RestitutionModel):
         self, speeds: Sequence[float], kappas: Sequence[float], *, extrapolate: str = "clip"
     ) -> None:
         s = as_real_array("speeds", speeds)
-        k = _kappa("kappas", kappas)
+        k = validated("kappas", kappas, "kappa")
         if s.ndim != 1 or k.shape != s.shape or s.size < 1:
             raise ValueError(
                 f"speeds and kappas must be 1-D and of equal non-zero length, "
@@ -88,6 +84,8 @@ class TabulatedRestitution(RestitutionModel):
             raise ValueError(
                 f"speeds must be strictly increasing, got {float(s[i])!r} at index {i}"
             )
+        if not isinstance(extrapolate, str):
+            raise TypeError(f"extrapolate must be 'clip' or 'error', got {extrapolate!r}")
         if extrapolate not in ("clip", "error"):
             raise ValueError(f"extrapolate must be 'clip' or 'error', got {extrapolate!r}")
         self.speeds, self.kappas, self.extrapolate = s, k, extrapolate
@@ -104,12 +102,24 @@ class TabulatedRestitution(RestitutionModel):
         """From vertical drop tests without spin: ``|v^-| = sqrt(2 g h_drop)`` and
         ``kappa = sqrt(h_rebound/h_drop)`` (Newton's definition, eq. 1.1).
 
+        Parameters
+        ----------
+        drop_heights : sequence of float
+            Heights the body falls from, m, ``> 0`` and distinct.
+        rebound_heights : sequence of float
+            Heights it rises back to, m, ``>= 0``, one per drop.
+        gravity : float
+            ``g``, m/s^2, ``> 0`` (default :data:`STANDARD_GRAVITY`).
+        extrapolate : {"clip", "error"}
+            As for the constructor.
+
         Examples
         --------
         >>> m = TabulatedRestitution.from_drop_heights([1.0], [0.64])
         >>> round(float(m.kappas[0]), 12)
         0.8
         """
+        g = setting("gravity", gravity, low=0.0, rule="a finite acceleration > 0 (m/s^2)")
         h0 = as_real_array("drop_heights", drop_heights)
         h1 = as_real_array("rebound_heights", rebound_heights)
         check("drop_heights", h0, lambda a: a > 0, "> 0")
@@ -123,7 +133,7 @@ class TabulatedRestitution(RestitutionModel):
             raise ValueError(f"drop_heights must be distinct, got {h0.tolist()}")
         order = np.argsort(h0)
         return cls(
-            np.sqrt(2.0 * gravity * h0[order]),
+            np.sqrt(2.0 * g * h0[order]),
             np.sqrt(h1[order] / h0[order]),
             extrapolate=extrapolate,
         )
