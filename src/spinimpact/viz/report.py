@@ -1,160 +1,125 @@
-"""Readable text report of one impact, rendered with Rich."""
+"""Readable text report of one impact, rendered with Rich.
+
+The tables come from :mod:`spinimpact.viz.tables`, the same builder the HTML
+page uses, in its ASCII notation (``omega``, ``tau1``, ``mu_hat``), so the
+terminal and the page show the same rows and numbers.
+"""
 
 from __future__ import annotations
 
-import math
+from typing import TYPE_CHECKING
 
 from rich.console import Console
-from rich.table import Table
+from rich.table import Table as RichTable
+from rich.text import Text
 
-from ..core import regime_thresholds
 from ..model.impact import Impact
 from ..model.particle import ParticleImpact
+from .tables import Table, impact_tables, number, regime_summary, simulation_table
 
-__all__ = ["print_report"]
+if TYPE_CHECKING:
+    from ..model.dynamics import Simulation
 
+__all__ = ["print_report", "print_simulation"]
 
-def _g(x: float, unit: str = "") -> str:
-    x = float(x)
-    if math.isinf(x):
-        text = "inf"
-    elif math.isnan(x):
-        text = "undefined"
-    else:
-        text = f"{x:.6g}"
-    return f"{text} {unit}".rstrip()
+_STYLES = {"creates energy": "bold red"}
 
 
-def _table(title: str, *columns: str) -> Table:
-    table = Table(title=title, title_justify="left", title_style="bold", show_edge=False)
-    for i, c in enumerate(columns):
-        table.add_column(c, justify="left" if i == 0 else "right")
-    return table
+def _rich(table: Table) -> RichTable:
+    """A builder table as a Rich table: labels left, values right, no markup parsed."""
+    out = RichTable(title=table.title, title_justify="left", title_style="bold", show_edge=False)
+    for i, heading in enumerate(table.columns):
+        out.add_column(Text(heading), justify="left" if i == 0 else "right")
+    for row in table.rows:
+        out.add_row(*(Text(cell, style=_STYLES.get(cell, "")) for cell in row))
+    return out
+
+
+def _console(console: Console | None) -> Console:
+    return console or Console(highlight=False, soft_wrap=True)
 
 
 def print_report(
     imp: Impact, particle: ParticleImpact | None = None, console: Console | None = None
 ) -> None:
-    """Print the regime, rebound, energy budget, works by phase, coefficients and
-    outcome of a single impact; with ``particle``, the Whittaker particle beside it."""
-    console = console or Console(highlight=False, soft_wrap=True)
-    b = imp.body
-    compression_limit, impact_limit = regime_thresholds(b.zeta, imp.mu, imp.kappa)
-    console.print(
-        f"[bold]Impact of a {b.name} body[/bold]  m = {_g(b.mass, 'kg')}, R = {_g(b.radius, 'm')}, "
-        f"rho = {_g(b.gyration, 'm')}, zeta = {_g(b.zeta)};  "
-        f"mu = {_g(imp.mu)}, kappa = {_g(imp.kappa)}"
-    )
-    console.print(
-        f"Regime: [bold]{imp.regime}[/bold]   |u-/v-| = {_g(imp.incidence_ratio)}  "
-        f"(stick in compression if <= zeta*mu = {_g(compression_limit)}; "
-        f"stick before rebound if <= (1+kappa)*zeta*mu = {_g(impact_limit)})"
-    )
-    console.print(
-        f"Normal impulse: tau0 = {_g(imp.tau0, 'N s')}, tau* = {_g(imp.tau_star, 'N s')}, "
-        f"tau1 = {_g(imp.tau1, 'N s')};  friction impulse f1 = {_g(imp.tangential_impulse, 'N s')}"
-    )
-    console.print()
+    """Print the complete report of one impact on a terminal.
 
-    t = _table("Rebound", "", "before", "after")
-    t.add_row("vx (m/s)", _g(imp.before.vx), _g(imp.after.vx))
-    t.add_row("vy (m/s)", _g(imp.before.vy), _g(imp.after.vy))
-    t.add_row("omega (rad/s)", _g(imp.before.omega), _g(imp.after.omega))
-    t.add_row("slip u (m/s)", _g(imp.slip_before), _g(imp.slip_after))
-    console.print(t)
-    console.print()
+    The regime and its thresholds, then the tables of
+    :func:`~spinimpact.viz.tables.impact_tables`: inputs, rebound, impulses,
+    energy budget, works by phase, coefficients, the outcome flags (as one
+    line) and, with ``particle``, Whittaker's particle beside the rigid body.
 
-    e0 = float(imp.kinetic_energy_before)
-    t = _table("Energy budget", "", "J", "of E-")
-    for label, value in (
-        ("kinetic energy before, E-", imp.kinetic_energy_before),
-        ("kinetic energy after, E+", imp.kinetic_energy_after),
-        ("dissipated, E- - E+", imp.dissipated_energy),
-        ("minimum during impact, Em", imp.min_kinetic_energy),
-    ):
-        t.add_row(label, _g(value), f"{float(value) / e0:.2%}" if e0 else "")
-    console.print(t)
-    console.print(
-        f"Minimum energy at tau_m = {_g(imp.tau_min_energy, 'N s')}: {imp.min_energy_case}"
-    )
-    console.print()
+    Parameters
+    ----------
+    imp : Impact
+        A single impact (shape ``()``), from :func:`spinimpact.solve`.
+    particle : ParticleImpact, optional
+        Whittaker's particle with the same incidence, from
+        :func:`spinimpact.solve_particle`.
+    console : rich.console.Console, optional
+        Where to print; by default standard output, without syntax highlighting.
 
-    t = _table("Works of the contact forces (J)", "phase", "normal", "friction", "total")
-    rows = (
-        ("compression", imp.work_compression_normal, imp.work_compression_tangential),
-        ("restitution", imp.work_restitution_normal, imp.work_restitution_tangential),
-        (
-            "whole impact",
-            imp.work_compression_normal + imp.work_restitution_normal,
-            imp.work_compression_tangential + imp.work_restitution_tangential,
-        ),
-    )
-    for phase, wn, wt in rows:
-        t.add_row(phase, _g(wn), _g(wt), _g(wn + wt))
-    console.print(t)
-    console.print()
+    Raises
+    ------
+    ValueError
+        If ``imp`` holds more than one impact.
 
-    t = _table("Coefficients", "", "value")
-    t.add_row("Newton restitution -v+/v-", _g(imp.newton_restitution))
-    t.add_row("Poisson restitution (tau1-tau0)/tau0", _g(imp.poisson_restitution))
-    t.add_row("energetic restitution sqrt(-Wr^n/Wc^n)", _g(imp.energetic_restitution))
-    t.add_row("tangential impact coefficient mu_hat = f1/tau1", _g(imp.impulse_ratio))
-    t.add_row("friction work ratio Wr^t/Wc^t", _g(imp.work_ratio_tangential))
-    console.print(t)
-    console.print()
+    Notes
+    -----
+    Units are SI: velocities in m/s, spin in rad/s (counter-clockwise
+    positive), impulses in N s, energies and works in J.
 
-    o = imp.outcome
-    flags = [
-        ("backward rebound", o.backward),
-        ("reversed spin", o.reversed_spin),
-        ("vertical rebound", o.vertical),
-        ("leaves spinning", o.spinning),
-        ("leaves rolling (u+ = 0)", o.rolling),
-    ]
-    console.print("Outcome: " + ", ".join(f"{name}: {'yes' if v else 'no'}" for name, v in flags))
-
-    if particle is not None:
-        verdict = "CREATES energy" if particle.creates_energy else "dissipates energy"
-        limit = float(particle.energy_threshold)
-        when = (
-            f"that model creates energy whenever |vx/vy| < {_g(limit)}"
-            if limit > 0
-            else "that model creates no energy at this mu and kappa"
-        )
-        console.print(
-            f"Compare: a material particle under Whittaker's unidirectional-slip model (eq. 8.7) "
-            f"with the same vx, vy leaves at vx+ = {_g(particle.after.vx, 'm/s')} and its energy "
-            f"changes by {_g(particle.energy_change, 'J')} ({verdict}; {when}). "
-            f"The rigid body never gains energy."
-        )
+    References
+    ----------
+    V. A. Lubarda, "On the frictional impact of a spinning disk against a fixed
+    surface", Proceedings of the Section of Natural Sciences, Montenegrin Academy
+    of Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
+    """
+    tables = impact_tables(imp, particle)
+    console = _console(console)
+    console.print(Text(f"Impact of a {imp.body.name} body on a rough surface", style="bold"))
+    console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), "   ", regime_summary(imp)))
+    for table in tables:
+        console.print()
+        if table.key == "outcome":
+            flags = ", ".join(f"{name}: {value}" for name, value in table.rows)
+            console.print(Text(f"{table.title}: {flags}"))
+            continue
+        console.print(_rich(table))
+        if table.note:
+            console.print(Text(table.note))
 
 
-def print_simulation(sim, console: Console | None = None) -> None:
+def print_simulation(sim: Simulation, console: Console | None = None) -> None:
     """Print a compliant-contact simulation beside the rigid closed form at the
-    law's own restitution."""
-    console = console or Console(highlight=False, soft_wrap=True)
-    rigid = sim.rigid()
-    console.print(f"[bold]Compliant impact[/bold] with {sim.contact!r}")
+    law's own restitution.
+
+    Parameters
+    ----------
+    sim : Simulation
+        Result of :func:`spinimpact.dynamics.simulate`.
+    console : rich.console.Console, optional
+        Where to print; by default standard output, without syntax highlighting.
+
+    Notes
+    -----
+    The contact duration is printed in ms and the largest compression in µm;
+    the table is :func:`~spinimpact.viz.tables.simulation_table`.
+    """
+    console = _console(console)
+    console.print(Text.assemble(("Compliant impact", "bold"), f" with {sim.contact!r}"))
     console.print(
-        f"contact duration {_g(sim.contact_duration * 1e3, 'ms')}, peak normal force "
-        f"{_g(sim.peak_force, 'N')}, largest compression {_g(sim.max_compression * 1e6, 'µm')}"
+        f"contact duration {number(sim.contact_duration * 1e3, 'ms')}, peak normal force "
+        f"{number(sim.peak_force, 'N')}, largest compression "
+        f"{number(sim.max_compression * 1e6, 'µm')}",
+        markup=False,
     )
     if sim.stick_time == sim.stick_time:  # not NaN
         console.print(
-            f"slip stops at t = {_g(sim.stick_time * 1e3, 'ms')} (tau = {_g(sim.tau_star, 'N s')})"
+            f"slip stops at t = {number(sim.stick_time * 1e3, 'ms')} "
+            f"(tau = {number(sim.tau_star, 'N s')})",
+            markup=False,
         )
-    t = _table("Simulated vs rigid closed form", "", "simulated", "rigid", "difference")
-    rows = (
-        ("vx+ (m/s)", sim.after.vx, rigid.after.vx),
-        ("vy+ (m/s)", sim.after.vy, rigid.after.vy),
-        ("omega+ (rad/s)", sim.after.omega, rigid.after.omega),
-        ("dissipated energy (J)", sim.dissipated_energy, rigid.dissipated_energy),
-        ("mu_hat = f1/tau1", sim.impulse_ratio, rigid.impulse_ratio),
-        ("Newton restitution", sim.newton_restitution, rigid.newton_restitution),
-        ("Poisson restitution", sim.poisson_restitution, rigid.poisson_restitution),
-        ("energetic restitution", sim.energetic_restitution, rigid.energetic_restitution),
-    )
-    for label, a, b in rows:
-        t.add_row(label, _g(a), _g(b), f"{float(a) - float(b):.2e}")
-    console.print(t)
-    console.print(f"Rigid regime at kappa = {_g(rigid.kappa)}: {rigid.regime}")
+    table = simulation_table(sim)
+    console.print(_rich(table))
+    console.print(Text(table.note))

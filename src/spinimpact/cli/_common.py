@@ -1,0 +1,257 @@
+"""What every command shares: the documented default case, the body, incidence and
+surface options, the body helper, the progress bar, the JSON helper and the
+translation of errors into one line on stderr with exit status 2.
+
+Only Click, NumPy and the model are imported here; Rich, Matplotlib and the file
+readers are imported inside the functions that need them, so ``spinimpact
+--help`` and ``spinimpact solve --json`` stay fast.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+import click
+
+from ..model.body import PRESETS, Body
+from ..model.impact import Impact, solve
+
+__all__ = [
+    "DEFAULTS",
+    "body_options",
+    "surface_options",
+    "incidence_options",
+    "float_option",
+    "make_body",
+    "solve_options",
+    "progress",
+    "image_format",
+    "jsonable",
+    "errors_to_exit_2",
+]
+
+#: The documented default case (``spinimpact solve`` with no options): a 1 kg
+#: solid sphere of radius 0.1 m, moving right at 3 m/s and down at 4 m/s with
+#: 10 rad/s of backspin, on a surface with mu = 0.2 and kappa = 0.8. Its contact
+#: sticks during restitution.
+DEFAULTS: dict[str, Any] = {
+    "body": "solid-sphere",
+    "mass": 1.0,
+    "radius": 0.1,
+    "vx": 3.0,
+    "vy": -4.0,
+    "omega": 10.0,
+    "mu": 0.2,
+    "kappa": 0.8,
+}
+
+
+def jsonable(value: Any) -> Any:
+    """``value`` with every non-finite float replaced by ``None``.
+
+    Parameters
+    ----------
+    value : dict, list, float or any JSON value
+        Typically :meth:`Impact.to_dict`'s output.
+
+    Returns
+    -------
+    Any
+        The same structure; ``json.dumps`` of it is strict JSON (no
+        ``Infinity`` or ``NaN`` tokens), the non-finite values becoming ``null``.
+    """
+    if isinstance(value, dict):
+        return {k: jsonable(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [jsonable(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def make_body(body: str | None, mass: float, radius: float, gyration: float | None) -> Body:
+    """The body named by the ``--body``, ``--mass``, ``--radius`` and ``--gyration`` options.
+
+    Parameters
+    ----------
+    body : str or None
+        Preset name (:data:`spinimpact.model.body.PRESETS`); ``None`` means the
+        default preset, or a custom body when ``gyration`` is given.
+    mass : float
+        Mass m, kg.
+    radius : float
+        Contact radius R, m.
+    gyration : float or None
+        Radius of gyration rho about the centre, m, for a custom body.
+
+    Returns
+    -------
+    Body
+
+    Raises
+    ------
+    click.UsageError
+        If both a preset and a radius of gyration are given.
+    ValueError
+        If a number is out of range (from :class:`~spinimpact.Body`).
+    """
+    if gyration is not None:
+        if body is not None:
+            raise click.UsageError("give either --body or --gyration, not both")
+        return Body(mass=mass, radius=radius, gyration=gyration)
+    return Body.preset(body or DEFAULTS["body"], mass=mass, radius=radius)
+
+
+def solve_options(o: dict[str, Any]) -> Impact:
+    """The Impact described by the shared body, incidence and surface options.
+
+    Parameters
+    ----------
+    o : dict
+        The command's options: ``body``, ``mass`` (kg), ``radius`` (m),
+        ``gyration`` (m), ``vx``, ``vy`` (m/s), ``omega`` (rad/s), ``mu``, ``kappa``.
+
+    Returns
+    -------
+    Impact
+        :func:`spinimpact.solve` of that case.
+    """
+    body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
+    return solve(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], kappa=o["kappa"])
+
+
+def _options(*decorators: Callable) -> Callable:
+    """Bundle click options so several commands share them."""
+
+    def wrap(function: Callable) -> Callable:
+        for decorator in reversed(decorators):
+            function = decorator(function)
+        return function
+
+    return wrap
+
+
+def float_option(name: str, help: str) -> Callable:
+    """A float option ``--NAME`` whose default is the documented default case's.
+
+    Parameters
+    ----------
+    name : str
+        Key of :data:`DEFAULTS` and name of the option.
+    help : str
+        Help text, with the unit.
+    """
+    return click.option(
+        f"--{name}", type=float, default=DEFAULTS[name], show_default=True, help=help
+    )
+
+
+body_options = _options(
+    click.option(
+        "--body",
+        type=click.Choice(list(PRESETS)),
+        default=None,
+        help=f"Body preset (default {DEFAULTS['body']}).",
+    ),
+    float_option("mass", "Mass m, kg."),
+    float_option("radius", "Contact radius R, m."),
+    click.option(
+        "--gyration",
+        type=float,
+        default=None,
+        help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
+    ),
+)
+surface_options = _options(
+    float_option("mu", "Friction >= 0."),
+    float_option("kappa", "Restitution in [0, 1]."),
+)
+incidence_options = _options(
+    float_option("vx", "Incidence vx, m/s."),
+    float_option("vy", "Incidence vy < 0, m/s."),
+    float_option("omega", "Incidence spin, rad/s, counter-clockwise positive."),
+)
+
+
+def progress() -> Any:
+    """A Rich progress bar on stderr, shown only on a terminal.
+
+    Returns
+    -------
+    rich.progress.Progress
+        To use as a context manager; disabled (prints nothing) when stderr is not
+        a terminal, so logs and pipes stay clean.
+    """
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TaskProgressColumn, TimeRemainingColumn
+
+    console = Console(stderr=True)
+    return Progress(
+        "[progress.description]{task.description}",
+        BarColumn(),
+        TaskProgressColumn(),
+        TimeRemainingColumn(),
+        console=console,
+        disable=not console.is_terminal,
+        transient=True,
+    )
+
+
+def image_format(path: str) -> str:
+    """The image format named by the suffix of ``--output`` (``png``, ``svg`` or ``pdf``).
+
+    Raises
+    ------
+    click.UsageError
+        For any other suffix.
+    """
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in ("png", "svg", "pdf"):
+        raise click.UsageError(f"--output must end in .png, .svg or .pdf, got {path!r}")
+    return fmt
+
+
+def _fail(message: str) -> None:
+    click.echo(f"spinimpact: error: {message}", err=True)
+    sys.exit(2)
+
+
+@contextmanager
+def errors_to_exit_2() -> Iterator[None]:
+    """Turn every error in the input into one line on stderr and exit status 2.
+
+    The package's error vocabulary, as the shell sees it:
+
+    * a bad option or usage (:class:`click.ClickException`), a bad value
+      (``ValueError``), a value of the wrong type (``TypeError``), a
+      floating-point fault (``ArithmeticError``), a failed computation
+      (``RuntimeError``), a malformed CSV file (``csv.Error``), a missing
+      optional package (``ImportError``, whose message names the extra to
+      install) and a file that cannot be read or written (``OSError``) print
+      ``spinimpact: error: MESSAGE`` and exit with status 2, without a traceback;
+    * Ctrl-C prints ``spinimpact: aborted`` and exits with status 130.
+
+    Anything else is a bug and keeps its traceback.
+    """
+    import csv
+
+    try:
+        yield
+    except click.exceptions.NoArgsIsHelpError as exc:
+        click.echo(exc.ctx.get_help() if exc.ctx else "")
+        sys.exit(0)
+    except click.exceptions.Abort:
+        click.echo("spinimpact: aborted", err=True)
+        sys.exit(130)
+    except click.ClickException as exc:
+        _fail(exc.format_message())
+    except (ValueError, TypeError, ArithmeticError, RuntimeError, ImportError, csv.Error) as exc:
+        _fail(str(exc))
+    except OSError as exc:
+        where = f"{exc.filename}: " if exc.filename else ""
+        _fail(f"{where}{exc.strerror or exc}")

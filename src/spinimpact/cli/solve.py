@@ -1,0 +1,65 @@
+"""``spinimpact solve`` (the terminal report, or JSON) and ``spinimpact report``
+(the HTML page) for one impact."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import click
+
+from ..model.particle import ParticleImpact, solve_particle
+from ._common import body_options, incidence_options, jsonable, solve_options, surface_options
+
+__all__ = ["solve_command", "report_command"]
+
+
+def _particle(o: dict[str, Any]) -> ParticleImpact:
+    """Whittaker's particle with the options' incidence, surface and mass."""
+    return solve_particle(o["vx"], o["vy"], mu=o["mu"], kappa=o["kappa"], mass=o["mass"])
+
+
+@click.command("solve")
+@body_options
+@incidence_options
+@surface_options
+@click.option(
+    "--json",
+    "as_json",
+    is_flag=True,
+    help="Print every Impact field as JSON (infinite or undefined values are null).",
+)
+def solve_command(as_json: bool, **options: Any) -> None:
+    """Solve one impact and print the report (regime, rebound, energy, works, mu_hat).
+
+    With no options it solves the documented default case: a 1 kg solid sphere
+    of radius 0.1 m at vx = 3 m/s, vy = -4 m/s with 10 rad/s of backspin, on a
+    surface with mu = 0.2 and kappa = 0.8.
+    """
+    imp = solve_options(options)
+    if as_json:
+        click.echo(json.dumps(jsonable(imp.to_dict()), indent=2))
+    else:
+        from ..viz.report import print_report  # Rich is imported only when a report is printed
+
+        print_report(imp, _particle(options))
+
+
+@click.command("report")
+@body_options
+@incidence_options
+@surface_options
+@click.option("--output", default="impact.html", show_default=True, help="HTML file to write.")
+def report_command(output: str, **options: Any) -> None:
+    """Write one self-contained HTML page about an impact: inputs, regime, rebound,
+    energy budget, works by phase, coefficients, outcome and figures."""
+    from ..io import atomic_path
+    from ..viz.html import impact_report_html
+
+    if Path(output).suffix.lower() not in (".html", ".htm"):
+        raise click.UsageError(f"--output must end in .html, got {output!r}")
+    page = impact_report_html(solve_options(options), _particle(options))
+    with atomic_path(output) as tmp:
+        tmp.write_text(page, encoding="utf-8")
+    click.echo(output)
