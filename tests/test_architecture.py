@@ -34,7 +34,7 @@ FACADES = {"spinimpact.dynamics"}
 
 #: What each layer may import from the package (besides itself).
 ALLOWED = {
-    "core": {"core"},
+    "core": {"core", "_validation"},  # _validation imports nothing of the package
     "model": {"core", "model", "_validation"},
     "io": {"core", "model", "io", "_validation", "__init__"},
     "viz": {"core", "model", "viz", "io", "_validation", "__init__"},

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validation import require
 from .kinematics import rebound as _rebound_numpy
 
 __all__ = ["HAVE_NUMBA", "rebound"]
@@ -83,12 +84,8 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     if fused is None:
         fused = HAVE_NUMBA
     if fused and not HAVE_NUMBA:
-        # Worded as spinimpact._validation.require words every missing extra (core
-        # imports nothing else of the package, so it cannot call require itself).
-        raise ImportError(
-            "fused=True needs numba, which is not installed: pip install 'spinimpact[fast]'",
-            name="numba",
-        ) from _NUMBA_ERROR
+        require("numba", "fused=True")  # raises ImportError naming the [fast] extra
+        raise ImportError(f"fused=True needs numba, which failed to import: {_NUMBA_ERROR}")
     args = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in
                                  (vx, vy, omega, mass, radius, zeta, mu, kappa)))  # fmt: skip
     if not fused:

@@ -116,7 +116,8 @@ class Result:
         for name, v in self._items():
             if isinstance(v, Result):
                 prefix = f"{name}_" if v._column_prefix else ""
-                out.update({prefix + k: c for k, c in v.columns().items()})
+                nested = v.columns().items()
+                out.update({prefix + k: np.broadcast_to(c, shape) for k, c in nested})
             elif _is_array(v):
                 out[name] = np.broadcast_to(np.asarray(v), shape)
             elif hasattr(v, "columns"):
