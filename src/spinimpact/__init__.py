@@ -17,8 +17,14 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 from .model.body import Body
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.particle import ParticleImpact, solve_particle
-from .model.planar import PlanarHistory, PlanarImpact, solve_planar
-from .model.planar_body import PlanarBody
+from .model.planar import (
+    PendulumImpact,
+    PlanarHistory,
+    PlanarImpact,
+    solve_pendulum,
+    solve_planar,
+)
+from .model.planar_body import Pendulum, PlanarBody
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 
 __version__ = "0.1.0"
@@ -30,6 +36,8 @@ __all__ = [
     "Impact",
     "Outcome",
     "ParticleImpact",
+    "Pendulum",
+    "PendulumImpact",
     "PlanarBody",
     "PlanarHistory",
     "PlanarImpact",
@@ -38,5 +46,6 @@ __all__ = [
     "TabulatedRestitution",
     "solve",
     "solve_particle",
+    "solve_pendulum",
     "solve_planar",
 ]

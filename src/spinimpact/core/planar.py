@@ -56,6 +56,7 @@ from __future__ import annotations
 from typing import Any, NamedTuple
 
 from ._xp import arrays, quiet
+from .impulse import CollisionMatrix
 
 __all__ = [
     "LAWS",
@@ -68,6 +69,9 @@ __all__ = [
     "planar_min_energy_impulse",
     "planar_contact_velocity",
     "planar_apply_impulse",
+    "pendulum_collision_matrix",
+    "pendulum_contact_velocity",
+    "pendulum_apply_impulse",
 ]
 
 #: Restitution laws, indexed by the ``law`` codes of :func:`planar_process`.
@@ -84,7 +88,13 @@ PLANAR_REGIMES = (
     "reverse-compression",  # slip stops at tau_s <= tau_c and reverses
     "reverse-restitution",  # tau_c < tau_s <= tau_f, slip reverses
     "slip-from-rest",  # u^- = 0 but the cone cannot hold it: slips in direction sign(b)
+    "locked",  # singular W: stuck and stopped against the support (a pendulum), no rebound
+    "jam",  # singular W: slip never stops and v never rises; no finite impulse (NaN)
 )
+
+#: ``r_2 / W_nn`` at or below which the stuck phase cannot raise the normal velocity:
+#: ``a d - b^2`` vanishes for a pendulum and is rounding-size there.
+_SINGULAR = 1e-12
 
 
 class PlanarProcess(NamedTuple):
@@ -128,9 +138,11 @@ def _phases(slip, vn, a, b, d, mu):
     tau_s = xp.where(slip == 0, 0.0, tau_s)
     stick = xp.abs(b) <= a * mu
     sb = xp.sign(b)
-    s2 = xp.where(stick, -b / a, -mu * sb)
+    moves = a > 0  # a = 0: the contact cannot move along the surface (b = 0 then too)
+    s2 = xp.where(stick, -b / _safe(xp, moves, a), -mu * sb)
     k2 = xp.where(stick, 0.0, b - a * mu * sb)
-    r2 = xp.where(stick, (a * d - b * b) / a, d - mu * xp.abs(b))
+    r2 = xp.where(stick, xp.where(moves, (a * d - b * b) / _safe(xp, moves, a), d),
+                  d - mu * xp.abs(b))  # fmt: skip
     return xp, (slip, vn, mu, s1, k1, r1, tau_s, stick, s2, k2, r2)
 
 
@@ -177,9 +189,13 @@ def planar_process(slip, vn, w_tt, w_tn, w_nn, mu, kappa, law):
     finite = tau_s != xp.inf
     ts = xp.where(finite, tau_s, 0.0)  # finite stand-in where the first phase never ends
     v1 = v0 + r1 * ts  # v at tau_s
+    # Rank one (a pendulum): u and v are proportional and vanish together, at tau_s.
+    _, (a, b, d) = arrays(w_tt, w_tn, w_nn)
+    together = finite & (a * d - b * b <= _SINGULAR * a * d)
+    v1 = xp.where(together, 0.0, v1)
     with quiet(xp, divide="ignore", invalid="ignore"):
         # compression: in the first phase, or in the second
-        ends1 = _first_reaches(xp, v0, r1, finite, ts, 0.0 * v0)
+        ends1 = _first_reaches(xp, v0, r1, finite, ts, 0.0 * v0) & ~together
         tau_c = xp.where(ends1, -v0 / _safe(xp, ends1, r1), ts - v1 / _safe(xp, ~ends1, r2))
         # Newton: v(tau_f) = -kappa v^-
         target = -kappa * v0
@@ -201,6 +217,20 @@ def planar_process(slip, vn, w_tt, w_tn, w_nn, mu, kappa, law):
         e2 = start + 2.0 * rest / _safe(xp, (vs + root) > 0, vs + root)
         energetic = xp.where(in_first, e1, e2)
     tau_f = xp.where(law == 0, newton, xp.where(law == 1, poisson, energetic))
+    # A singular W (a pendulum on its pivot): u and v are proportional, so they vanish
+    # together at tau_s; once stuck the normal velocity cannot rise, and the body stops
+    # against its support. Compression ends there; Newton's and
+    # Stronge's laws can do no restitution, and Poisson's extra impulse lies in the null
+    # space of W (the pivot takes it): no velocity changes after tau_s.
+    _, (w_nn,) = arrays(w_nn)
+    locked = stick & (r2 <= _SINGULAR * w_nn) & finite
+    tau_c = xp.where(locked, ts, tau_c)
+    tau_f = xp.where(locked, xp.where(law == 1, (1.0 + kappa) * ts, ts), tau_f)
+    # Jam: the slip never stops and friction keeps the normal velocity from rising; no
+    # finite impulse ends the impact (only possible for a singular W).
+    jam = ~finite & (r1 <= 0)
+    tau_c = xp.where(jam, xp.nan, tau_c)
+    tau_f = xp.where(jam, xp.nan, tau_f)
 
     f = s1 * xp.minimum(tau_f, tau_s) + s2 * xp.where(tau_f > tau_s, tau_f - ts, 0.0)
     state = planar_state_at(tau_f, u0, v0, w_tt, w_tn, w_nn, mu, tau_s)
@@ -210,6 +240,7 @@ def planar_process(slip, vn, w_tt, w_tn, w_nn, mu, kappa, law):
     code = xp.where((code != 4) & early, code - 1, code)
     code = xp.where(u0 == 0, xp.where(stick, 1, 7), code)
     code = xp.where(mu == 0, 0, code)
+    code = xp.where(locked, 8, xp.where(jam, 9, code))
     return PlanarProcess(
         xp.astype(code, xp.int8), tau_s, tau_c, tau_f, s1, s2, f + 0.0, state.slip, state.normal
     )
@@ -303,3 +334,28 @@ def planar_apply_impulse(vx, vy, omega, mass, inertia, rx, ry, friction, normal)
         vy + normal / mass,
         omega + (rx * normal - ry * friction) / inertia,
     )
+
+
+def pendulum_collision_matrix(inertia_pivot, px, py):
+    """Collision matrix of a rigid pendulum on a fixed frictionless pivot, 1/kg.
+
+    ``p = (px, py)`` is the contact point relative to the pivot, m, and
+    ``inertia_pivot`` the moment of inertia about the pivot, kg m^2. The only motion is
+    the rotation ``omega`` about the pivot, so the contact moves with
+    ``c = omega e_z x p = (-omega py, omega px)`` and an impulse ``(f, tau)`` changes
+    ``omega`` by ``(px tau - py f)/J_O``:
+    ``W = [[py^2, -px py], [-px py, px^2]] / J_O``, of rank one.
+    """
+    return CollisionMatrix(py * py / inertia_pivot, -px * py / inertia_pivot,
+                           px * px / inertia_pivot)  # fmt: skip
+
+
+def pendulum_contact_velocity(omega, px, py):
+    """Contact-point velocity ``(u, v) = (-omega py, omega px)`` of a pendulum, m/s."""
+    return -omega * py, omega * px
+
+
+def pendulum_apply_impulse(omega, inertia_pivot, px, py, friction, normal):
+    """Spin of a pendulum after a contact impulse ``(f, tau)``:
+    ``omega + (px tau - py f)/J_O``, rad/s (angular momentum about the pivot)."""
+    return omega + (px * normal - py * friction) / inertia_pivot

@@ -14,14 +14,20 @@ from typing import Any
 
 import numpy as np
 
-from .. import core
 from .._validation import as_real_array, broadcast, check, validated
 from ..core import planar as kernels
 from .impact import State, _restitution
-from .planar_body import PlanarBody
+from .planar_body import Pendulum, PlanarBody
 from .result import Array, Result, freeze
 
-__all__ = ["PlanarImpact", "PlanarHistory", "solve_planar", "LAWS"]
+__all__ = [
+    "PlanarImpact",
+    "PendulumImpact",
+    "PlanarHistory",
+    "solve_planar",
+    "solve_pendulum",
+    "LAWS",
+]
 
 #: Restitution laws :func:`solve_planar` accepts.
 LAWS = kernels.LAWS
@@ -112,10 +118,10 @@ class PlanarImpact(Result):
     def __getitem__(self, index: Any) -> PlanarImpact:
         imp = super().__getitem__(index)
         b = self.body
-        parts = {n: getattr(b, n) for n in PlanarBody.COLUMNS}
+        parts = {n: getattr(b, n) for n in b.COLUMNS}
         if any(np.ndim(x) for x in parts.values()):
             parts = {n: np.broadcast_to(x, self.shape)[index] for n, x in parts.items()}
-            b = PlanarBody(**parts, name=b.name)
+            b = type(b)(**parts, name=b.name)
         return dataclasses.replace(imp, body=b)
 
     def history(self, n: int = 201) -> PlanarHistory:
@@ -134,9 +140,7 @@ class PlanarImpact(Result):
         args = (self.slip_before, self.normal_velocity_before, w.tt, w.tn, w.nn, self.mu)
         st = kernels.planar_state_at(grid, *args, self.tau_star)
         before = (self.before.vx, self.before.vy, self.before.omega)
-        vx, vy, om = kernels.planar_apply_impulse(
-            *before, b.mass, b.inertia, b.rx, b.ry, st.friction_impulse, grid
-        )
+        vx, vy, om = b.apply_impulse(*before, st.friction_impulse, grid)
         return PlanarHistory(
             tau=grid,
             vx=vx,
@@ -146,7 +150,7 @@ class PlanarImpact(Result):
             normal_velocity=st.normal,
             force_ratio=st.force_ratio,
             tangential_impulse=st.friction_impulse,
-            kinetic_energy=core.kinetic_energy(vx, vy, om, b.mass, b.inertia),
+            kinetic_energy=b.kinetic_energy(vx, vy, om),
             tau0=t0,
             tau_star=ts,
             tau1=t1,
@@ -163,6 +167,14 @@ class PlanarImpact(Result):
             f"vy={a.vy:.6g} m/s, omega={a.omega:.6g} rad/s; dissipated "
             f"{self.dissipated_energy:.6g} J>"
         )
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class PendulumImpact(PlanarImpact):
+    """A :class:`PlanarImpact` whose body is a :class:`~spinimpact.Pendulum`
+    (:func:`solve_pendulum`); ``before``/``after`` give its centre of mass's velocity."""
+
+    body: Pendulum  # type: ignore[assignment]
 
 
 def solve_planar(
@@ -210,41 +222,90 @@ def solve_planar(
     """
     if not isinstance(body, PlanarBody):
         raise TypeError(f"body must be a spinimpact.PlanarBody, got {type(body).__name__}")
+    return _solve(PlanarImpact, body, vx, vy, omega, mu, kappa, law)
+
+
+def solve_pendulum(
+    pendulum: Pendulum, omega: Any, *, mu: Any, kappa: Any, law: str = "poisson"
+) -> PlanarImpact:
+    """Solve the impact of a rigid pendulum, on a fixed frictionless pivot, on the surface.
+
+    Parameters
+    ----------
+    pendulum : Pendulum
+        Mass, inertia, centre of mass and contact point relative to the pivot.
+    omega : float or array_like
+        Spin before the impact, rad/s, counter-clockwise positive; the contact point
+        must approach the surface (``omega px < 0``).
+    mu, kappa, law
+        As for :func:`solve_planar`.
+
+    Returns
+    -------
+    PendulumImpact
+        A :class:`PlanarImpact` with the pendulum as its body; ``before``/``after``
+        give the centre of mass's velocity and the spin.
+
+    Notes
+    -----
+    The collision matrix has rank one, so the contact's slip and normal velocity vanish
+    together, at the end of compression. Then either the friction cone holds the
+    contact and the pendulum stops (``locked``), or the slip reverses for the
+    restitution phase; in the second case the energetic coefficient is the geometric
+    mean of Newton's and Poisson's, ``eta^2 = kappa_N kappa_P`` (the normal velocity
+    rises at one rate in compression and another in restitution).
+
+    Examples
+    --------
+    >>> import math
+    >>> from spinimpact import Pendulum, solve_pendulum
+    >>> p = Pendulum.rod(mass=1.0, length=1.0, angle=math.radians(60))
+    >>> imp = solve_pendulum(p, omega=-2.0, mu=0.2, kappa=0.8, law="poisson")
+    >>> str(imp.regime)
+    'reverse-compression'
+    >>> kn, kp, eta = (float(x) for x in (imp.newton_restitution, imp.poisson_restitution,
+    ...                                   imp.energetic_restitution))
+    >>> round(eta**2 - kn * kp, 12)
+    0.0
+    """
+    if not isinstance(pendulum, Pendulum):
+        raise TypeError(f"pendulum must be a spinimpact.Pendulum, got {type(pendulum).__name__}")
+    om = as_real_array("omega", omega)
+    vx, vy = pendulum.centre_velocity(om)
+    return _solve(PendulumImpact, pendulum, vx, vy, om, mu, kappa, law)
+
+
+def _solve(kind, body, vx, vy, omega, mu, kappa, law):  # type: ignore[no-untyped-def]
     if not isinstance(law, str):
         raise TypeError(f"law must be one of {', '.join(LAWS)}, got {law!r}")
     if law not in LAWS:
         raise ValueError(f"law must be one of {', '.join(LAWS)}, got {law!r}")
     vx_, vy_, om_ = (as_real_array(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega)))
     mu_ = validated("mu", mu)
-    shapes = broadcast(vx=vx_, vy=vy_, omega=om_, mass=np.asarray(body.mass),
-                       inertia=np.asarray(body.inertia), rx=np.asarray(body.rx),
-                       ry=np.asarray(body.ry))  # fmt: skip
-    vx_, vy_, om_, m, inertia, rx, ry = shapes
-    u0, v0 = kernels.planar_contact_velocity(vx_, vy_, om_, rx, ry)
-    check("the contact point's normal velocity vy + omega*rx", v0, lambda v: v < 0,
+    parts = {n: np.asarray(getattr(body, n)) for n in body.COLUMNS}
+    broadcast(vx=vx_, vy=vy_, omega=om_, mu=mu_, **parts)  # names the shapes if they clash
+    u0, v0 = body.contact_velocity(vx_, vy_, om_)
+    check("the contact point's normal velocity", np.asarray(v0), lambda v: v < 0,
           "< 0 (the contact point must approach the surface)")  # fmt: skip
     kappa_ = _restitution(kappa, v0)
-    u0, v0, mu_, kappa_, m, inertia, rx, ry, vx_, vy_, om_ = broadcast(
-        slip=u0, v=v0, mu=mu_, kappa=kappa_, mass=m, inertia=inertia, rx=rx, ry=ry,
-        vx=vx_, vy=vy_, omega=om_,
-    )  # fmt: skip
-    w = core.planar_collision_matrix(m, inertia, rx, ry)
-    contact = (u0, v0, w.tt, w.tn, w.nn, mu_)
+    w = body.collision_matrix
+    u0, v0, mu_, kappa_, vx_, vy_, om_, a, b, d = np.broadcast_arrays(
+        u0, v0, mu_, kappa_, vx_, vy_, om_, w.tt, w.tn, w.nn, *parts.values()
+    )[:10]
+    contact = (u0, v0, a, b, d, mu_)
     p = kernels.planar_process(*contact, kappa_, LAWS.index(law))
-    vx1, vy1, om1 = kernels.planar_apply_impulse(
-        vx_, vy_, om_, m, inertia, rx, ry, p.friction_impulse, p.tau_end
-    )
+    vx1, vy1, om1 = body.apply_impulse(vx_, vy_, om_, p.friction_impulse, p.tau_end)
     zero = 0.0 * p.tau_end
     wcn, wct = kernels.planar_work(zero, p.tau_compression, *contact, p.tau_slip)
     wrn, wrt = kernels.planar_work(p.tau_compression, p.tau_end, *contact, p.tau_slip)
-    e0 = core.kinetic_energy(vx_, vy_, om_, m, inertia)
+    e0 = body.kinetic_energy(vx_, vy_, om_)
     loss = -(wcn + wct + wrn + wrt)
     tau_m = kernels.planar_min_energy_impulse(*contact, p.tau_slip, p.tau_end)
     f_m = kernels.planar_state_at(tau_m, *contact, p.tau_slip).friction_impulse
-    at_min = kernels.planar_apply_impulse(vx_, vy_, om_, m, inertia, rx, ry, f_m, tau_m)
+    at_min = body.apply_impulse(vx_, vy_, om_, f_m, tau_m)
     with np.errstate(invalid="ignore", divide="ignore"):
         energetic = np.sqrt(np.maximum(-wrn / wcn, 0.0))
-    return PlanarImpact(
+    return kind(
         body=body,
         law=law,
         mu=freeze(mu_),
@@ -262,14 +323,14 @@ def solve_planar(
         tangential_impulse=freeze(p.friction_impulse),
         impulse_ratio=freeze(p.friction_impulse / p.tau_end),
         kinetic_energy_before=freeze(e0),
-        kinetic_energy_after=freeze(core.kinetic_energy(vx1, vy1, om1, m, inertia)),
+        kinetic_energy_after=freeze(body.kinetic_energy(vx1, vy1, om1)),
         dissipated_energy=freeze(loss),
         dissipated_fraction=freeze(loss / e0),
         work_compression_normal=freeze(wcn),
         work_compression_tangential=freeze(wct),
         work_restitution_normal=freeze(wrn),
         work_restitution_tangential=freeze(wrt),
-        min_kinetic_energy=freeze(core.kinetic_energy(*at_min, m, inertia)),
+        min_kinetic_energy=freeze(body.kinetic_energy(*at_min)),
         tau_min_energy=freeze(tau_m),
         newton_restitution=freeze(-p.normal_after / v0),
         poisson_restitution=freeze((p.tau_end - p.tau_compression) / p.tau_compression),

@@ -16,9 +16,10 @@ import numpy as np
 
 from .. import core
 from .._validation import as_real_array, check, validated
+from ..core import planar as kernels
 from .body import Body
 
-__all__ = ["PlanarBody"]
+__all__ = ["PlanarBody", "Pendulum"]
 
 
 def _number(name: str, value: object, rules: str | None = None) -> float | np.ndarray:
@@ -87,6 +88,21 @@ class PlanarBody:
     @property
     def collision_matrix(self) -> core.CollisionMatrix:
         return core.planar_collision_matrix(self.mass, self.inertia, self.rx, self.ry)
+
+    # -- the body's side of the contact seam ----------------------------------------------
+    def contact_velocity(self, vx, vy, omega):  # type: ignore[no-untyped-def]
+        """Slip and normal velocity ``(u, v)`` of the contact point, m/s."""
+        return kernels.planar_contact_velocity(vx, vy, omega, self.rx, self.ry)
+
+    def apply_impulse(self, vx, vy, omega, friction, normal):  # type: ignore[no-untyped-def]
+        """Velocities ``(vx, vy, omega)`` after the contact impulse ``(f, tau)``."""
+        return kernels.planar_apply_impulse(
+            vx, vy, omega, self.mass, self.inertia, self.rx, self.ry, friction, normal
+        )
+
+    def kinetic_energy(self, vx, vy, omega):  # type: ignore[no-untyped-def]
+        """``m (vx^2 + vy^2)/2 + J omega^2/2``, J."""
+        return core.kinetic_energy(vx, vy, omega, self.mass, self.inertia)
 
     def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
         """``mass, inertia, rx, ry`` broadcast to ``shape``."""
@@ -171,6 +187,100 @@ class PlanarBody:
         check("offset", np.asarray(e) - np.asarray(r), lambda x: x < 0, "< radius")
         th = _number("angle", angle)
         return cls(m, m * g * g, -e * np.cos(th), -r - e * np.sin(th), name="eccentric-disk")
+
+
+@dataclass(frozen=True, eq=False)
+class Pendulum:
+    """A rigid pendulum on a fixed frictionless pivot, striking the surface at one point.
+
+    Parameters
+    ----------
+    mass : float or array_like
+        Mass ``m``, kg, ``> 0``.
+    inertia : float or array_like
+        Moment of inertia about the centre of mass, kg m^2, ``> 0``.
+    gx, gy : float or array_like
+        Centre of mass relative to the pivot, m.
+    px, py : float or array_like
+        Contact point relative to the pivot, m, at the instant of impact; ``py < 0``
+        (the pivot lies above the surface).
+    name : str, optional
+
+    Notes
+    -----
+    The pivot leaves one motion, the rotation ``omega``: the collision matrix
+    (:func:`~spinimpact.core.planar.pendulum_collision_matrix`) has rank one, the slip
+    and the normal velocity of the contact stay proportional, and they vanish together.
+    If the friction cone can hold the contact there, the pendulum stops against the
+    surface (regime ``locked``); if not, the slip reverses and it rebounds.
+    """
+
+    mass: float | np.ndarray
+    inertia: float | np.ndarray
+    gx: float | np.ndarray
+    gy: float | np.ndarray
+    px: float | np.ndarray
+    py: float | np.ndarray
+    name: str = "pendulum"
+
+    COLUMNS = ("mass", "inertia", "gx", "gy", "px", "py")
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mass", _positive("mass", self.mass))
+        object.__setattr__(self, "inertia", _positive("inertia", self.inertia))
+        for name in ("gx", "gy", "px", "py"):
+            object.__setattr__(self, name, _number(name, getattr(self, name)))
+        check("py", np.asarray(self.py), lambda y: y < 0,
+              "< 0 (the pivot must lie above the surface, not at the contact)")  # fmt: skip
+
+    @property
+    def inertia_pivot(self) -> float | np.ndarray:
+        """Moment of inertia about the pivot, ``J_G + m |g|^2``, kg m^2."""
+        return self.inertia + self.mass * (self.gx**2 + self.gy**2)
+
+    @property
+    def collision_matrix(self) -> core.CollisionMatrix:
+        return kernels.pendulum_collision_matrix(self.inertia_pivot, self.px, self.py)
+
+    def centre_velocity(self, omega):  # type: ignore[no-untyped-def]
+        """Velocity of the centre of mass, ``omega e_z x g = (-omega gy, omega gx)``, m/s."""
+        return -omega * self.gy, omega * self.gx
+
+    def contact_velocity(self, vx, vy, omega):  # type: ignore[no-untyped-def]
+        """Slip and normal velocity of the contact, from ``omega`` alone, m/s."""
+        return kernels.pendulum_contact_velocity(omega, self.px, self.py)
+
+    def apply_impulse(self, vx, vy, omega, friction, normal):  # type: ignore[no-untyped-def]
+        """``(vx, vy, omega)`` after the contact impulse: the spin changes by
+        ``(px tau - py f)/J_O`` and the centre follows it."""
+        om = kernels.pendulum_apply_impulse(
+            omega, self.inertia_pivot, self.px, self.py, friction, normal
+        )
+        return (*self.centre_velocity(om), om)
+
+    def kinetic_energy(self, vx, vy, omega):  # type: ignore[no-untyped-def]
+        """``m (vx^2 + vy^2)/2 + J_G omega^2/2`` (``= J_O omega^2/2``), J."""
+        return core.kinetic_energy(vx, vy, omega, self.mass, self.inertia)
+
+    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
+        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
+
+    def to_dict(self) -> dict[str, object]:
+        out: dict[str, object] = {"name": self.name}
+        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
+        return out
+
+    @classmethod
+    def rod(cls, *, mass: object, length: object, angle: object) -> Pendulum:
+        """A uniform rod hanging from a pivot at one end, striking with the other.
+
+        ``angle`` is the rod's angle below the horizontal, rad, in ``(0, pi)``: the tip
+        is at ``L (cos angle, -sin angle)`` from the pivot (``pi/2``: hanging straight
+        down). ``J_G = m L^2/12``, the centre of mass at mid-length.
+        """
+        m, length_, th = _positive("mass", mass), _positive("length", length), _angle(angle)
+        px, py = np.asarray(length_) * np.cos(th), -np.asarray(length_) * np.sin(th)
+        return cls(m, m * length_**2 / 12.0, px / 2.0, py / 2.0, px, py, name="rod-pendulum")
 
 
 def _angle(
