@@ -1,8 +1,9 @@
 """Qualitative rebound outcomes: conditions on the incidence (paper section 4).
 
-The paper states that the conditions for backward rebound, reversed spin and
+The paper [1]_ states that the conditions for backward rebound, reversed spin and
 spinning or non-spinning vertical rebound are "straightforward and omitted for
-brevity". They are derived here from eqs. (4.13) and (4.16).
+brevity". They are derived here from eqs. (4.13) and (4.16); equation numbers are the
+paper's.
 
 Write ``a = vx^-``, ``b = R omega^-``, ``w = |v^-|``, ``u = a + b``,
 ``s = sign(u)`` and ``c = (1 + kappa) mu w``.
@@ -29,6 +30,12 @@ vertically with spin iff it slips throughout and ``vx^- = sign(u^-)(1+kappa) mu 
 
 Equalities are decided to within a few rounding errors of the size of the
 terms in each condition (e.g. ``|(zeta-1) a| + |b|`` for ``b = (zeta-1) a``).
+
+References
+----------
+.. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a
+   fixed surface", Proceedings of the Section of Natural Sciences, Montenegrin
+   Academy of Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
 """
 
 from __future__ import annotations
@@ -61,23 +68,67 @@ _RTOL = 16 * float(np.finfo(np.float64).eps)  # a Python float: any array librar
 
 
 def rebound_outcomes(vx, vy, omega, radius, zeta, mu, kappa):
-    """Flags of the qualitative rebound outcome, decided from the incidence alone.
+    r"""Flags of the qualitative rebound outcome, decided from the incidence alone.
+
+    Parameters
+    ----------
+    vx, vy, omega : float or array
+        Incidence velocity of the centre (m/s, ``vy < 0``) and spin (rad/s,
+        counter-clockwise positive): the paper's ``u_C^-``, ``v^-``, ``omega^-``.
+    radius, zeta : float or array
+        Contact radius ``R`` (m) and ``zeta = 1 + R^2/rho^2``.
+    mu, kappa : float or array
+        Kinetic Coulomb friction coefficient and coefficient of normal restitution.
 
     Returns
     -------
     OutcomeFlags
-        A named tuple of boolean arrays:
+        A named tuple of boolean arrays of the broadcast shape:
 
-    backward : ndarray of bool
-        ``vx^- != 0`` and ``vx^+`` has the opposite sign (the body bounces back).
-    reversed_spin : ndarray of bool
-        ``omega^- != 0`` and ``omega^+`` has the opposite sign.
-    vertical : ndarray of bool
-        ``vx^+ = 0``: the centre leaves along the normal.
-    spinning : ndarray of bool
-        ``omega^+ != 0``.
-    rolling : ndarray of bool
-        ``u^+ = 0``: the body leaves rolling (the contact stuck, eq. 4.6).
+        ``backward``
+            ``vx^- != 0`` and ``vx^+`` has the opposite sign (the body bounces back).
+        ``reversed_spin``
+            ``omega^- != 0`` and ``omega^+`` has the opposite sign.
+        ``vertical``
+            ``vx^+ = 0``: the centre leaves along the normal.
+        ``spinning``
+            ``omega^+ != 0``.
+        ``rolling``
+            ``u^+ = 0``: the body leaves rolling (the contact stuck, eq. 4.6).
+
+    Notes
+    -----
+    With ``u^- = vx^- + R omega^-`` and ``s = sign(u^-)``, the rebound of eqs. (4.13)
+    and (4.16) [1]_ is
+
+    .. math::
+
+        \begin{cases}
+            v_x^+ = v_x^- - u^-/\zeta, \quad R\omega^+ = -v_x^+,
+                & |u^-| \le (1+\kappa)\zeta\mu|v^-| \\
+            v_x^+ = v_x^- - s(1+\kappa)\mu|v^-|, \quad
+                R\omega^+ = R\omega^- - s(\zeta - 1)(1+\kappa)\mu|v^-|, & \text{otherwise,}
+        \end{cases}
+
+    and each flag is a sign condition on these, written in the incidence (module
+    docstring) and decided without computing the rebound, so that an exactly vertical
+    or non-spinning rebound is recognised despite rounding. The paper omits these
+    conditions "for brevity".
+
+    References
+    ----------
+    .. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a fixed
+       surface", Proceedings of the Section of Natural Sciences, Montenegrin Academy of
+       Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
+
+    Examples
+    --------
+    A solid sphere (``zeta = 7/2``) with backspin ``R omega^- = (zeta - 1) vx^-`` sticks
+    and leaves straight up without spin:
+
+    >>> flags = rebound_outcomes(0.5, -1.0, 12.5, radius=0.1, zeta=3.5, mu=0.5, kappa=0.8)
+    >>> [name for name, flag in zip(OUTCOMES, flags) if flag]
+    ['vertical', 'rolling']
     """
     xp, (a, vy, omega) = arrays(vx, vy, omega)
     b = radius * omega

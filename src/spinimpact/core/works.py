@@ -1,25 +1,26 @@
-"""Works and energy at the contact point (paper sections 5, 6 and 8).
+r"""Works and energy at the contact point (paper sections 5, 6 and 8).
 
-By the work principle, what the contact forces do to the bodies is the integral
-of the contact velocity against the contact impulse, ``dE = c . dp =
-(c_n + c_t F/N) dtau``: the works of the normal and friction forces, the energy
-dissipated and the minimum of the kinetic energy during the impact are all
-properties of the contact point alone. This module computes them from the
-contact seam's quantities (:mod:`spinimpact.core.impulse`: ``slip = c_t^-``,
-``vy = c_n^- < 0``, ``mass = 1/W_nn``, ``zeta = W_tt/W_nn``, ``W_tn = 0``), so the
-paper's bodies, a sphere in 3D and two colliding spheres share them.
+By the work principle, what the contact forces do to the bodies is the integral of the
+contact velocity against the contact impulse, ``dE = c . dp = (c_n + c_t F/N) dtau``: the
+works of the normal and friction forces, the energy dissipated and the minimum of the
+kinetic energy during the impact are all properties of the contact point alone. This
+module computes them from the contact seam's quantities (:mod:`spinimpact.core.impulse`:
+``slip = c_t^-``, ``vy = c_n^- < 0``, ``mass = 1/W_nn``, ``zeta = W_tt/W_nn``, ``W_tn = 0``),
+so the paper's bodies, a sphere in 3D and two colliding spheres share them.
 
 The normal velocity is ``c_n = c_n^- + tau/m`` (eq. 3.1) and the slip speed
-``|c_t| = max(|c_t^-| - zeta mu tau/m, 0)`` (eqs. 4.2, 4.12), with the force
-ratio ``F/N = -mu sign(c_t^-)`` while slipping and ``0`` once stuck (eq. 6.4).
-Integrals of linear pieces are evaluated exactly by the trapezoid rule over the
-pieces, so no formula below divides by ``mu`` or by ``c_t^-``.
+``|c_t| = max(|c_t^-| - zeta mu tau/m, 0)`` (eqs. 4.2, 4.12), with the force ratio
+``F/N = -mu sign(c_t^-)`` while slipping and ``0`` once stuck (eq. 6.4). Integrals of
+linear pieces are evaluated exactly by the trapezoid rule over the pieces, so no formula
+below divides by ``mu`` or by ``c_t^-``. Equation numbers are those of Lubarda [1]_. The
+arguments ``slip, vy`` (m/s), ``mass`` (kg), ``zeta, mu, kappa`` (dimensionless) are those
+of :mod:`spinimpact.core.impulse`; results are in J and N s; a kernel lists only its others.
 
 References
 ----------
-.. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a
-   fixed surface", Proceedings of the Section of Natural Sciences, Montenegrin
-   Academy of Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
+.. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a fixed surface",
+   Proceedings of the Section of Natural Sciences, Montenegrin Academy of Sciences and Arts
+   (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
 .. [2] W. J. Stronge, Impact Mechanics, Cambridge University Press, 2000.
 """
 
@@ -80,19 +81,50 @@ MIN_ENERGY_CASES = (
 
 
 def work_normal(a, b, mass, vy):
-    """Work of the normal reaction between impulses ``a`` and ``b``.
+    r"""Work of the normal reaction between the normal impulses ``a`` and ``b``.
 
-    ``int_a^b v dtau`` with ``v = v^- + tau/m`` (eqs. 3.1, 5.9, 6.1, 6.2).
+    Parameters
+    ----------
+    a, b : float or array
+        Normal impulses bounding the interval, N s.
+
+    Returns
+    -------
+    work : float or array
+        J; negative while the contact approaches (``v < 0``).
+
+    Notes
+    -----
+    With ``v = v^- + tau/m`` (eq. 3.1),
+
+    .. math:: \int_a^b v\,d\tau = (b - a)\left(v^- + \frac{a + b}{2m}\right):
+
+    ``W_c^n`` on ``[0, tau_0]``, ``W_r^n`` on ``[tau_0, tau_1]`` (eqs. 6.1, 6.2), ``W^n`` on
+    ``[0, tau_1]`` (eq. 5.9).
     """
     return (b - a) * (2.0 * vy + (a + b) / mass) / 2.0
 
 
 def work_tangential(a, b, mass, slip, zeta, mu):
-    """Work of the friction force between impulses ``a <= b``.
+    r"""Work of the friction force between the normal impulses ``a <= b``.
 
-    ``int_a^b (F/N) u dtau = -mu int_a^b |u| dtau`` (eqs. 5.8, 6.1, 6.2), with the
-    slip speed falling linearly to zero at ``tau_*`` (eq. 4.5) and staying zero
-    afterwards (eq. 4.12). Always ``<= 0``.
+    Parameters
+    ----------
+    a, b : float or array
+        Normal impulses bounding the interval, ``a <= b``, N s.
+
+    Returns
+    -------
+    work : float or array
+        J, always ``<= 0``.
+
+    Notes
+    -----
+    .. math:: \int_a^b \frac{F}{N}\,u\,d\tau = -\mu \int_a^b |u|\,d\tau ,
+        \qquad |u| = \max\left(|u^-| - \zeta\mu\tau/m,\ 0\right)
+
+    (eqs. 5.8, 6.1, 6.2): the slip speed falls linearly to zero at ``tau_*`` (eq. 4.5) and
+    stays zero afterwards (eq. 4.12), so the integral is a trapezoid.
     """
     xp, (a, b, slip) = arrays(a, b, slip)
     tau_star = stick_impulse(mass, slip, zeta, mu)
@@ -106,15 +138,20 @@ def work_tangential(a, b, mass, slip, zeta, mu):
 
 
 def contact_phase_works(slip, vy, mass, zeta, mu, kappa):
-    """Works of the normal and friction forces in compression and restitution.
+    r"""Works of the normal and friction forces in compression and restitution.
 
     Returns
     -------
     PhaseWorks
-        ``(W_c^n, W_c^t, W_r^n, W_r^t)`` in J (eqs. 6.1-6.2). In closed form
-        ``W_c^n = tau_0 v^-/2 = -m (v^-)^2/2`` and ``W_r^n = kappa^2 m (v^-)^2/2``
-        (section 6, so that ``eta = kappa``, eq. 6.5); the friction works reduce
-        to eqs. (6.6)-(6.11) in each regime.
+        ``(W_c^n, W_c^t, W_r^n, W_r^t)`` in J (eqs. 6.1, 6.2).
+
+    Notes
+    -----
+    .. math:: W_c^n = \tfrac12 \tau_0 v^- = -\tfrac12 m (v^-)^2, \qquad
+        W_r^n = \tfrac12 \kappa^2 m (v^-)^2
+
+    (section 6, so that ``eta = kappa``, eq. 6.5); the friction works reduce to eqs.
+    (6.6)-(6.11) in each regime.
     """
     tau0 = compression_impulse(mass, vy)
     tau1 = total_impulse(mass, vy, kappa)
@@ -128,11 +165,23 @@ def contact_phase_works(slip, vy, mass, zeta, mu, kappa):
 
 
 def contact_dissipated_energy(slip, vy, mass, zeta, mu, kappa):
-    """Energy lost in the impact, ``Delta E = -(W^n + W^t) >= 0`` (eqs. 5.1, 5.10), J.
+    r"""Energy lost in the impact, ``Delta E = -(W^n + W^t) >= 0`` (eqs. 5.1, 5.10).
 
-    Equals eq. (5.4) ``m (v^-)^2 (1 - kappa^2 + |u^-/v^-|^2/zeta) / 2`` when the
-    contact sticks and eq. (5.6) when it slips throughout. Evaluated as a sum of
-    non-negative terms, so it never comes out negative by cancellation.
+    Returns
+    -------
+    energy : float or array
+        ``Delta E`` in J, evaluated as ``m (v^-)^2 (1 - kappa^2)/2 - W^t``, a sum of
+        non-negative terms, so it never comes out negative by cancellation.
+
+    Notes
+    -----
+    .. math:: \frac{\Delta E}{\tfrac12 m |v^-|^2} = \begin{cases}
+            1 - \kappa^2 + \zeta^{-1} |u^-/v^-|^2, & |u^-/v^-| \le (1+\kappa)\zeta\mu \\
+            (1+\kappa)\{1 - \kappa + \mu[2|u^-/v^-| - (1+\kappa)\zeta\mu]\},
+                & |u^-/v^-| \ge (1+\kappa)\zeta\mu
+        \end{cases}
+
+    the form after eq. (5.4) when the contact sticks and eq. (5.6) when it slips throughout.
     """
     tau1 = total_impulse(mass, vy, kappa)
     normal = 0.5 * mass * vy * vy * (1.0 - kappa * kappa)
@@ -140,19 +189,27 @@ def contact_dissipated_energy(slip, vy, mass, zeta, mu, kappa):
 
 
 def contact_min_energy_impulse(slip, vy, mass, zeta, mu, kappa):
-    """Normal impulse ``tau_m`` at which the kinetic energy is smallest (eqs. 8.2-8.6), N s.
+    r"""Normal impulse ``tau_m`` at which the kinetic energy is smallest (eqs. 8.2-8.6).
 
-    ``dE/dtau = c_n + c_t F/N`` is continuous and non-decreasing, so ``E`` is convex
-    in ``tau`` and its minimum over ``[0, tau_1]`` is where ``dE/dtau`` vanishes:
+    Returns
+    -------
+    tau_m : float or array
+        N s, in ``[tau_0, tau_1]``.
 
-    * while slipping, at ``tau_m = m (|v^-| + mu |u^-|)/(1 + zeta mu^2)`` (eq. 8.2),
-      valid when ``|u^-/v^-| >= zeta mu`` (Fig. 5a, 5c);
-    * in the rolling stage at ``tau_m = tau_0`` when ``|u^-/v^-| <= zeta mu``
-      (Fig. 5b, eq. 8.6);
-    * if slip continues and eq. (8.2) exceeds ``tau_1`` (the right inequality of
-      eq. 8.5 fails), ``E`` is still decreasing when the impact ends, so the
-      minimum is the rebound energy, ``tau_m = tau_1``. The paper does not state
-      this case; see ``docs/errata.md``.
+    Notes
+    -----
+    ``dE/dtau = c_n + c_t F/N`` is continuous and non-decreasing, so ``E`` is convex in
+    ``tau`` and its minimum over ``[0, tau_1]`` is where ``dE/dtau`` vanishes:
+
+    .. math:: \tau_m = \begin{cases}
+            \tau_0, & |u^-/v^-| \le \zeta\mu \quad \text{(rolling: Fig. 5b, eq. 8.6)} \\
+            \min\left(m \dfrac{|v^-| + \mu|u^-|}{1 + \zeta\mu^2},\ \tau_1\right),
+                & |u^-/v^-| > \zeta\mu \quad \text{(sliding: eq. 8.2, Figs. 5a, 5c)}
+        \end{cases}
+
+    If slip continues and eq. (8.2) exceeds ``tau_1`` (the right inequality of eq. 8.5
+    fails), ``E`` is still decreasing when the impact ends, so the minimum is the rebound
+    energy, ``tau_m = tau_1``. The paper does not state this case; see ``docs/errata.md``.
     """
     tau0 = compression_impulse(mass, vy)
     tau1 = total_impulse(mass, vy, kappa)
@@ -162,12 +219,19 @@ def contact_min_energy_impulse(slip, vy, mass, zeta, mu, kappa):
 
 
 def contact_min_energy_case(slip, vy, mass, zeta, mu, kappa):
-    """Index into :data:`MIN_ENERGY_CASES` of where ``E(tau)`` is smallest (Fig. 5).
+    r"""Index into :data:`MIN_ENERGY_CASES` of where ``E(tau)`` is smallest (Fig. 5).
 
+    Returns
+    -------
+    case : int8 array
+        ``MIN_ENERGY_CASES[case]`` names it.
+
+    Notes
+    -----
     Decided with the regime (:func:`~spinimpact.core.impulse.regime_code`): stick in
-    compression or no slip gives (b); stick in restitution (a); slip throughout
-    (c) or, past eq. (8.5), the rebound itself; ``mu = 0`` is labelled
-    ``frictionless`` (``tau_m = tau_0``).
+    compression or no slip gives (b); stick in restitution (a); slip throughout (c) or,
+    past eq. (8.5), the rebound itself (``tau_m = tau_1``, ``docs/errata.md``); ``mu = 0``
+    is labelled ``frictionless`` (``tau_m = tau_0``).
     """
     code = regime_code(slip, vy, zeta, mu, kappa)
     tau_m = contact_min_energy_impulse(slip, vy, mass, zeta, mu, kappa)
@@ -184,20 +248,35 @@ def contact_min_energy_case(slip, vy, mass, zeta, mu, kappa):
 
 
 def work_ratio_tangential(ratio, zeta, mu, kappa):
-    """Ratio of restitution to compression friction work, ``W_r^t / W_c^t``.
+    r"""Ratio of restitution to compression friction work, ``W_r^t/W_c^t`` (eqs. 6.15-6.18).
 
-    As a function of ``ratio = |u^-/v^-|`` (eqs. 6.15, 6.16, 6.18); with
-    ``x = ratio/(zeta mu) = tau_*/tau_0``:
+    Parameters
+    ----------
+    ratio : float or array
+        Incidence ratio ``|u^-/v^-|``, dimensionless.
 
-    .. math::
+    Returns
+    -------
+    work_ratio : float or array
+        Dimensionless, in ``[0, kappa]``; NaN where ``mu = 0`` or ``ratio = 0`` (no
+        friction work is done at all).
 
-        \\frac{W_r^t}{W_c^t} = \\begin{cases}
-            0, & x \\le 1 \\quad (6.15)\\\\
-            \\dfrac{(x-1)^2}{2x-1}, & 1 \\le x \\le 1+\\kappa \\quad (6.16)\\\\
-            \\kappa\\,\\dfrac{2x-2-\\kappa}{2x-1}, & x \\ge 1+\\kappa \\quad (6.18)
-        \\end{cases}
+    Notes
+    -----
+    With ``x = ratio/(zeta mu) = tau_*/tau_0``,
 
-    NaN where ``mu = 0``, or ``ratio = 0``: no friction work is done at all.
+    .. math:: \frac{W_r^t}{W_c^t} = \begin{cases}
+            0, & x \le 1 \quad (6.15)\\
+            \dfrac{(x-1)^2}{2x-1}, & 1 \le x \le 1+\kappa \quad (6.16)\\
+            \kappa\,\dfrac{2x-2-\kappa}{2x-1}, & x \ge 1+\kappa \quad (6.18)
+        \end{cases}
+
+    Examples
+    --------
+    At ``x = 1 + kappa`` it is ``kappa^2/(1 + 2 kappa)``: 1/3 for ``kappa = 1`` (eq. 6.17).
+
+    >>> round(float(work_ratio_tangential(1.2, zeta=3.0, mu=0.2, kappa=1.0)), 12)
+    0.333333333333
     """
     xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     defined = (mu > 0) & (ratio > 0)
@@ -210,11 +289,24 @@ def work_ratio_tangential(ratio, zeta, mu, kappa):
 
 
 def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
-    """Bounds ``(lower, upper)`` on ``W_r^t/W_c^t`` in the interval holding ``ratio``.
+    r"""Bounds on ``W_r^t/W_c^t`` in the interval of ``|u^-/v^-|`` holding ``ratio``.
 
+    Parameters
+    ----------
+    ratio : float or array
+        Incidence ratio ``|u^-/v^-|``, dimensionless.
+
+    Returns
+    -------
+    WorkRatioBounds
+        ``(lower, upper)``, dimensionless, depending on ``kappa`` only; NaN where ``mu = 0``
+        or ``ratio = 0``.
+
+    Notes
+    -----
     ``(0, 0)`` for ``ratio <= zeta mu`` (eq. 6.15); ``(0, kappa^2/(1+2 kappa))`` for
-    ``zeta mu <= ratio <= (1+kappa) zeta mu`` (eq. 6.17); and
-    ``(kappa^2/(1+2 kappa), kappa)`` beyond (eq. 6.19). They depend on ``kappa`` only.
+    ``zeta mu <= ratio <= (1+kappa) zeta mu`` (eq. 6.17); ``(kappa^2/(1+2 kappa), kappa)``
+    beyond (eq. 6.19).
     """
     xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     limit = zeta * mu
@@ -231,12 +323,27 @@ def work_ratio_tangential_bounds(ratio, zeta, mu, kappa):
 
 
 def restitution_work(ratio, zeta, mu, kappa):
-    """Total restitution work ``W_r`` in units of ``tau_0 |v^-|/2 = m (v^-)^2/2``.
+    r"""Total restitution work ``W_r`` in units of ``tau_0 |v^-|/2 = m (v^-)^2/2``.
 
-    Eqs. (6.7), (6.9), (6.11) as a function of ``ratio = |u^-/v^-|``:
-    ``kappa^2`` for ``ratio <= zeta mu``;
-    ``kappa^2 - zeta mu^2 (ratio/(zeta mu) - 1)^2`` up to ``(1+kappa) zeta mu``;
-    ``kappa^2 + kappa zeta mu^2 (2 + kappa - 2 ratio/(zeta mu))`` beyond.
+    Parameters
+    ----------
+    ratio : float or array
+        Incidence ratio ``r = |u^-/v^-|``, dimensionless.
+
+    Returns
+    -------
+    work : float or array
+        ``W_r/(m (v^-)^2/2)``, dimensionless.
+
+    Notes
+    -----
+    .. math:: \frac{W_r}{\tfrac12 m (v^-)^2} = \begin{cases}
+            \kappa^2, & r \le \zeta\mu \quad (6.7)\\
+            \kappa^2 - \zeta\mu^2 (r/(\zeta\mu) - 1)^2,
+                & \zeta\mu \le r \le (1+\kappa)\zeta\mu \quad (6.9)\\
+            \kappa^2 + \kappa\zeta\mu^2 (2 + \kappa - 2r/(\zeta\mu)),
+                & r \ge (1+\kappa)\zeta\mu \quad (6.11)
+        \end{cases}
     """
     xp, (ratio, zeta, mu, kappa) = arrays(ratio, zeta, mu, kappa)
     limit = zeta * mu
@@ -247,22 +354,36 @@ def restitution_work(ratio, zeta, mu, kappa):
 
 
 def restitution_work_zero(zeta, mu, kappa):
-    """Incidence ratio ``|u^-/v^-|`` above which the restitution work is negative.
+    r"""Incidence ratio ``|u^-/v^-|`` above which the restitution work is negative.
 
+    Returns
+    -------
+    ratio : float or array
+        Dimensionless; ``+inf`` when ``mu = 0`` or ``kappa = 0`` (``W_r`` is then never
+        negative: without friction it is ``kappa^2 m (v^-)^2/2``, and without restitution
+        there is no restitution phase).
+
+    Notes
+    -----
     ``W_r >= 0`` exactly when ``|u^-/v^-|`` is at most
 
-    * ``zeta mu + sqrt(zeta) kappa`` if ``zeta mu^2 >= 1`` (eq. 6.13); this lies in
-      the stick-restitution interval, and ``W_r <= 0`` throughout the slip
-      interval (eq. 6.14, first line);
-    * ``(kappa + (2 + kappa) zeta mu^2) / (2 mu)`` if ``zeta mu^2 < 1``; this lies in
-      the slip interval.
+    .. math:: \begin{cases}
+            \zeta\mu + \sqrt{\zeta}\,\kappa, & \zeta\mu^2 \ge 1 \quad (6.13)\\
+            (\kappa + (2 + \kappa)\zeta\mu^2)/(2\mu), & \zeta\mu^2 < 1
+        \end{cases}
 
-    The second line of the paper's eq. (6.14) claims ``W_r >= 0`` for *all*
-    ``|u^-/v^-| >= (1+kappa) zeta mu`` when ``zeta mu^2 <= 1``; eq. (6.11) shows
-    ``W_r`` falls linearly in ``|u^-/v^-|`` and turns negative at the value above
-    (``docs/errata.md``). ``+inf`` when ``mu = 0`` or ``kappa = 0`` (then ``W_r``
-    is never negative: without friction it is ``kappa^2 m (v^-)^2/2``, and without
-    restitution there is no restitution phase).
+    The first lies in the stick-restitution interval, and ``W_r <= 0`` throughout the slip
+    interval (eq. 6.14, first line); the second lies in the slip interval. The second line
+    of the paper's eq. (6.14) claims ``W_r >= 0`` for *all* ``|u^-/v^-| >= (1+kappa) zeta
+    mu`` when ``zeta mu^2 <= 1``; eq. (6.11) shows ``W_r`` falls linearly in ``|u^-/v^-|``
+    and turns negative at the value above (``docs/errata.md``).
+
+    Examples
+    --------
+    The case of ``docs/errata.md``: ``W_r`` of a solid disk changes sign at 2.875.
+
+    >>> round(float(restitution_work_zero(zeta=3.0, mu=0.1, kappa=0.5)), 12)
+    2.875
     """
     xp, (zeta, mu, kappa) = arrays(zeta, mu, kappa)
     strong = zeta * mu * mu >= 1.0

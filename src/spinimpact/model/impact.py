@@ -22,8 +22,10 @@ _out = freeze
 
 @dataclass(frozen=True, eq=False)
 class State(Result):
-    """Velocity state of the body: centre velocity ``(vx, vy)`` in m/s and spin
-    ``omega`` in rad/s (counter-clockwise positive)."""
+    """Velocity state of the body: centre velocity ``(vx, vy)``, m/s, and spin ``omega``, rad/s.
+
+    ``omega`` is positive counter-clockwise (about +z, out of the page).
+    """
 
     vx: Array
     vy: Array
@@ -32,8 +34,9 @@ class State(Result):
 
 @dataclass(frozen=True, eq=False)
 class Outcome(Result):
-    """Qualitative rebound outcome, decided from the incidence by the closed-form
-    conditions of :mod:`spinimpact.core.outcomes`.
+    """Qualitative rebound outcome, decided from the incidence alone.
+
+    The closed-form conditions are those of :mod:`spinimpact.core.outcomes`.
 
     Attributes
     ----------
@@ -86,41 +89,48 @@ class History(Result):
 class Impact(Result):
     """Everything :func:`solve` computes about an impact (or an array of impacts).
 
-    Each numeric field has the broadcast shape of the inputs (a NumPy scalar for
-    scalar inputs). Units are SI; impulses in N s, energies and works in J.
+    Each numeric field has the broadcast shape of the inputs (a NumPy scalar for scalar
+    inputs). Units are SI; equation numbers are those of Lubarda (2010), cited in
+    :func:`solve`.
 
     Attributes
     ----------
     body : Body
-    mu, kappa : friction and normal restitution used (``kappa`` evaluated from a
-        restitution model if one was given).
+        The body, as given to :func:`solve` (indexing an Impact indexes its arrays).
+    mu, kappa : float or ndarray
+        Friction and normal restitution used (``kappa`` evaluated from a restitution
+        model if one was given).
     before, after : State
-        Incidence and rebound velocities (eqs. 4.13, 4.16, 3.4).
-    slip_before, slip_after : contact-point velocity ``u^-``, ``u^+`` (eqs. 4.4, 7.11).
-    incidence_ratio : ``|u^-/v^-|`` (eqs. 4.6, 4.14, 4.15).
-    regime : str
-        ``frictionless`` (``mu = 0``), ``no-slip`` (``u^- = 0``),
-        ``stick-compression`` (``tau_* <= tau_0``), ``stick-restitution``
-        (``tau_0 < tau_* <= tau_1``) or ``slip`` (``tau_* > tau_1``).
-    tau0, tau_star, tau1 : normal impulse at the end of compression (eq. 3.2), of
-        slip (eq. 4.3; ``0`` if ``u^- = 0``, ``inf`` if ``mu = 0``) and of the impact
-        (eq. 3.6).
-    tangential_impulse : ``f_1`` (eq. 5.7).
-    impulse_ratio : ``mu_hat = f_1/tau_1`` (eqs. 7.4, 7.7-7.9).
-    kinetic_energy_before, kinetic_energy_after, dissipated_energy : ``E^-``, ``E^+``
-        and ``Delta E = E^- - E^+ >= 0`` (eqs. 5.1-5.10).
-    dissipated_fraction : ``Delta E / E^-``, the share of the incidence energy lost,
-        in ``[0, 1]``.
-    work_compression_normal, work_compression_tangential,
-    work_restitution_normal, work_restitution_tangential :
-        ``W_c^n, W_c^t, W_r^n, W_r^t`` (eqs. 6.1-6.11).
-    work_ratio_tangential : ``W_r^t/W_c^t`` (eqs. 6.15-6.19); NaN with no friction work.
-    min_kinetic_energy, tau_min_energy, min_energy_case : ``E_m``, ``tau_m`` and
-        which case of Fig. 5 holds (eqs. 8.1-8.6).
-    newton_restitution, poisson_restitution, energetic_restitution :
+        Incidence and rebound velocities (eqs. 3.4, 4.13, 4.16).
+    slip_before, slip_after : float or ndarray
+        Contact-point velocity ``u^-``, ``u^+``, m/s (eqs. 4.4, 7.11).
+    incidence_ratio : float or ndarray
+        ``|u^-/v^-|`` (eqs. 4.6, 4.14, 4.15).
+    regime : str or ndarray of str
+        ``frictionless`` (``mu = 0``), ``no-slip`` (``u^- = 0``), ``stick-compression``
+        (``tau_* <= tau_0``), ``stick-restitution`` (``tau_0 < tau_* <= tau_1``) or
+        ``slip`` (``tau_* > tau_1``).
+    tau0, tau_star, tau1 : float or ndarray
+        Normal impulse, N s, at the end of compression (eq. 3.2), of slip (eq. 4.3; ``0``
+        if ``u^- = 0``, ``inf`` if ``mu = 0``) and of the impact (eq. 3.6).
+    tangential_impulse, impulse_ratio : float or ndarray
+        ``f_1``, N s (eqs. 5.7, 7.6), and ``mu_hat = f_1/tau_1`` (eqs. 7.4, 7.7-7.9).
+    kinetic_energy_before, kinetic_energy_after, dissipated_energy : float or ndarray
+        ``E^-``, ``E^+`` and ``Delta E = E^- - E^+ >= 0``, J (eqs. 5.1-5.10).
+    dissipated_fraction : float or ndarray
+        ``Delta E / E^-``, the share of the incidence energy lost, in ``[0, 1]``.
+    work_compression_normal, work_compression_tangential : float or ndarray
+        ``W_c^n``, ``W_c^t``, J (eqs. 6.1, 6.6-6.11).
+    work_restitution_normal, work_restitution_tangential : float or ndarray
+        ``W_r^n``, ``W_r^t``, J (eqs. 6.2, 6.6-6.11).
+    work_ratio_tangential : float or ndarray
+        ``W_r^t/W_c^t`` (eqs. 6.15-6.19); NaN with no friction work.
+    min_kinetic_energy, tau_min_energy, min_energy_case : float, float, str or ndarray
+        ``E_m`` (J), ``tau_m`` (N s) and which case of Fig. 5 holds (eqs. 8.1-8.6).
+    newton_restitution, poisson_restitution, energetic_restitution : float or ndarray
         ``kappa_N = -v^+/v^-`` (eq. 1.1), ``kappa_P = (tau_1 - tau_0)/tau_0`` (eq. 1.2)
-        and ``eta = sqrt(-W_r^n/W_c^n)`` (eq. 1.3), each evaluated from the
-        computed process by its own definition; all equal ``kappa`` (section 3).
+        and ``eta = sqrt(-W_r^n/W_c^n)`` (eq. 1.3), each evaluated from the computed
+        process by its own definition; all equal ``kappa`` (section 3).
     outcome : Outcome
         Backward rebound, reversed spin, vertical, spinning, rolling.
     """
@@ -178,7 +188,16 @@ class Impact(Result):
         tau : array_like, optional
             Explicit impulses in ``[0, tau_1]`` to sample instead.
 
-        Only for a single impact; select one of an array with ``impact[i]``.
+        Returns
+        -------
+        History
+            Velocities, slip, force ratio, friction impulse and kinetic energy at ``tau``.
+
+        Raises
+        ------
+        ValueError
+            For an Impact of more than one impact (select one with ``impact[i]``), ``n``
+            not an integer >= 2, or ``tau`` outside ``[0, tau_1]``.
         """
         if self.shape != ():
             raise ValueError(
@@ -249,21 +268,16 @@ def solve(
     mu: Any,
     kappa: Any,
 ) -> Impact:
-    """Solve the frictional impact of a spinning body on a fixed rough surface.
-
-    Keller's method (Lubarda 2010): the normal impulse ``tau`` is the
-    independent variable, friction is Coulomb's with stick once the contact
-    point stops slipping, and Poisson's restitution ends the impact at
-    ``tau_1 = (1 + kappa) tau_0``.
+    r"""Solve the frictional impact of a spinning body on a fixed rough surface.
 
     Parameters
     ----------
     body : Body
         The body; its mass, radius and gyration may themselves be arrays.
     vx : float or array_like
-        Incidence velocity of the centre along the surface, m/s.
+        Incidence velocity of the centre along the surface, m/s (the paper's ``u_C^-``).
     vy : float or array_like
-        Incidence normal velocity, m/s, ``< 0`` (approaching the surface).
+        Incidence normal velocity, m/s, ``< 0`` (approaching the surface; ``v^-``).
     omega : float or array_like
         Incidence spin, rad/s, counter-clockwise positive. A ball rolling to the
         right without slip has ``omega = -vx/R``.
@@ -288,6 +302,25 @@ def solve(
         For non-finite input, ``vy >= 0``, ``mu < 0``, ``kappa`` outside
         ``[0, 1]``, or shapes that do not broadcast; the message names the
         parameter, the value and the first offending index.
+
+    Notes
+    -----
+    Keller's method [2]_ as the paper [1]_ applies it: the normal impulse ``tau`` is the
+    independent variable, friction is Coulomb's with stick once the contact point stops
+    slipping at ``tau_*`` (eq. 4.3), and Poisson's restitution ends the impact at
+    ``tau_1 = (1 + kappa) tau_0`` (eq. 3.6). With ``f_1 = -mu sign(u^-) min(tau_*, tau_1)``,
+
+    .. math:: v_x^+ = v_x^- + f_1/m, \quad v_y^+ = -\kappa v_y^-, \quad
+        \omega^+ = \omega^- + (\zeta - 1) f_1/(m R)
+
+    (eqs. 2.1-2.3, 4.13, 4.16); the kernels of :mod:`spinimpact.core` give the rest.
+
+    References
+    ----------
+    .. [1] V. A. Lubarda, "On the frictional impact of a spinning disk against a fixed
+       surface", Proceedings of the Section of Natural Sciences, Montenegrin Academy of
+       Sciences and Arts (Glasnik Odjeljenja prirodnih nauka, CANU) 19 (2010).
+    .. [2] J. B. Keller, "Impact with friction", Journal of Applied Mechanics 53 (1986) 1-4.
 
     Examples
     --------

@@ -29,7 +29,26 @@ Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give a
 
 
 def freeze(x: Any) -> Array:
-    """NumPy scalar for 0-d results, a read-only array otherwise (results are frozen)."""
+    """Freeze a value for a result field: read-only, and a NumPy scalar when 0-d.
+
+    Parameters
+    ----------
+    x : array_like
+        A number or array (copied, so the caller's array stays writable).
+
+    Returns
+    -------
+    numpy.generic or numpy.ndarray
+        A NumPy scalar for 0-d input, otherwise a read-only copy of ``x``.
+
+    Examples
+    --------
+    >>> freeze(2.0)
+    np.float64(2.0)
+    >>> a = freeze([1.0, 2.0])
+    >>> a, a.flags.writeable
+    (array([1., 2.]), False)
+    """
     arr = np.array(x)
     arr.setflags(write=False)
     return arr[()]
@@ -39,7 +58,9 @@ def freeze(x: Any) -> Array:
 class Result:
     """Base of the package's result objects (a frozen dataclass of named fields).
 
-    Subclasses are frozen dataclasses. Class attributes tune the flat columns:
+    Subclasses are frozen dataclasses whose fields are NumPy scalars, read-only arrays
+    (see :func:`freeze`), nested results, or other objects (a body, a string). Class
+    attributes tune the flat columns:
 
     ``_shape_field``
         The field whose shape is the shape of the result (default: the broadcast
@@ -52,6 +73,19 @@ class Result:
         Whether each array field holds one value per impact, so that
         ``result[i]`` may index every array field. Results of one impact over
         time (a history) set it to ``False``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from spinimpact import Body, solve
+    >>> imp = solve(Body.solid_disk(mass=1.0, radius=0.1), vx=np.array([1.0, 2.0]),
+    ...             vy=-1.0, omega=0.0, mu=0.2, kappa=0.5)
+    >>> imp.shape, len(imp), imp[1].shape
+    ((2,), 2, ())
+    >>> [str(r) for r in imp.regime]
+    ['slip', 'slip']
+    >>> list(imp.after.columns())
+    ['vx', 'vy', 'omega']
     """
 
     _shape_field: ClassVar[str | None] = None
@@ -61,7 +95,14 @@ class Result:
     # -- the impacts ---------------------------------------------------------------
     @property
     def shape(self) -> tuple[int, ...]:
-        """Broadcast shape of the impacts (``()`` for a single impact)."""
+        """Broadcast shape of the impacts (``()`` for a single impact).
+
+        Returns
+        -------
+        tuple of int
+            The shape of the ``_shape_field`` field if the class names one, otherwise
+            the broadcast shape of every array field and nested result.
+        """
         if self._shape_field is not None:
             return np.shape(getattr(self, self._shape_field))
         shapes = [np.shape(v) for _, v in self._items() if _is_array(v)]
@@ -91,7 +132,22 @@ class Result:
 
     # -- plain values and flat columns ------------------------------------------------
     def to_dict(self) -> dict[str, Any]:
-        """Fields as plain Python values (floats, str, bool, nested dicts, lists)."""
+        """Fields as plain Python values, for JSON.
+
+        Returns
+        -------
+        dict
+            One entry per field: floats, bools and strings for 0-d fields, (nested)
+            lists for arrays, nested dicts for nested results and for objects with a
+            ``to_dict`` method (a :class:`~spinimpact.Body`); other values as they are.
+
+        Examples
+        --------
+        >>> from spinimpact import Body, solve
+        >>> imp = solve(Body.solid_disk(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.2, kappa=0.5)
+        >>> {name: round(value, 12) for name, value in imp.after.to_dict().items()}
+        {'vx': 0.7, 'vy': 0.5, 'omega': -6.0}
+        """
         out: dict[str, Any] = {}
         for name, v in self._items():
             if isinstance(v, Result):
@@ -110,6 +166,12 @@ class Result:
         Nested results are flattened (``after_vx``; the outcome flags keep their
         names); objects with a ``columns(shape)`` method (a :class:`~spinimpact.Body`)
         contribute theirs. Non-numeric, non-per-impact fields are left out.
+
+        Returns
+        -------
+        dict of str to numpy.ndarray
+            Column name to an array of :attr:`shape` (read-only broadcast views), in the
+            order of :meth:`column_names`.
         """
         shape = self.shape
         out: dict[str, np.ndarray] = {}
@@ -131,6 +193,17 @@ class Result:
         Read from the field annotations: a nested :class:`Result` contributes its
         own names, a type with a ``COLUMNS`` tuple (:class:`~spinimpact.Body`)
         those, and a field annotated ``Array`` (or ``np.ndarray``) its own name.
+
+        Returns
+        -------
+        tuple of str
+            The column names, computed without any result at hand.
+
+        Examples
+        --------
+        >>> from spinimpact.model.impact import State
+        >>> State.column_names()
+        ('vx', 'vy', 'omega')
         """
         hints = typing.get_type_hints(cls)
         names: list[str] = []
