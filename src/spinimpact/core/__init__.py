@@ -82,6 +82,7 @@ from .particle import (
     particle_energy_threshold,
     particle_rebound,
 )
+from .restitution import restitution_by_definition
 from .works import (
     contact_dissipated_energy,
     contact_min_energy_case,
@@ -108,6 +109,7 @@ __all__ = [
     "contact_phase_works",
     "planar_collision_matrix",
     "rebound_normal_velocity",
+    "restitution_by_definition",
     "MIN_ENERGY_CASES",
     "OUTCOMES",
     "REGIMES",

@@ -38,6 +38,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .restitution import restitution_by_definition
+
 __all__ = [
     "linear_force",
     "hunt_crossley_force",
@@ -366,6 +368,7 @@ def integrate_contact(
     ratio = np.where(flags, 0.0, -mu * np.sign(vxs + radius * oms))
     tau0, tau1, work_n0 = float(tau0), float(y[4]), float(work_n0)
     work_r = float(y[6]) - work_n0
+    kappas = restitution_by_definition(vy, float(y[2]), tau0, tau1, work_n0, work_r)
     return ContactRun(
         t=times, compression=delta, vx=vxs, vy=vys, omega=oms, tau=tau,
         tangential_impulse=f, normal_work=work_n, normal_force=normal,
@@ -373,8 +376,8 @@ def integrate_contact(
         t0=float(t0), t_star=float(t_star), t1=float(t), tau0=tau0,
         compression_work=work_n0, peak_force=float(normal.max()),
         max_compression=float(np.interp(t0, times, delta)),  # largest where v_y = 0
-        newton_restitution=float(-y[2] / vy), poisson_restitution=(tau1 - tau0) / tau0,
-        energetic_restitution=math.sqrt(max(-work_r / work_n0, 0.0)),
+        newton_restitution=float(kappas.newton), poisson_restitution=float(kappas.poisson),
+        energetic_restitution=float(kappas.energetic),
     )  # fmt: skip
 
 

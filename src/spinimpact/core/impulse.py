@@ -49,6 +49,7 @@ from __future__ import annotations
 from typing import Any, NamedTuple
 
 from ._xp import arrays, quiet
+from .restitution import RestitutionCoefficients, restitution_by_definition
 
 __all__ = [
     "REGIMES",
@@ -100,14 +101,6 @@ class RegimeThresholds(NamedTuple):
 
     compression: Any  #: ``zeta mu``: at or below it the slip stops during compression
     impact: Any  #: ``(1 + kappa) zeta mu``: above it the contact slips throughout
-
-
-class RestitutionCoefficients(NamedTuple):
-    """Newton's, Poisson's and Stronge's coefficients, each by its own definition."""
-
-    newton: Any  #: ``kappa_N = -v^+/v^-`` (eq. 1.1)
-    poisson: Any  #: ``kappa_P = (tau_1 - tau_0)/tau_0`` (eq. 1.2)
-    energetic: Any  #: ``eta = sqrt(-W_r^n/W_c^n)`` (eq. 1.3)
 
 
 def planar_collision_matrix(mass, inertia, rx, ry):
@@ -381,10 +374,8 @@ def restitution_coefficients(mass, vy, vy_after, work_compression_normal, work_r
     """
     tau0 = compression_impulse(mass, vy)
     tau1 = mass * (vy_after - vy)
-    eta2 = -work_restitution_normal / work_compression_normal
-    xp, (eta2,) = arrays(eta2)
-    return RestitutionCoefficients(
-        -vy_after / vy, (tau1 - tau0) / tau0, xp.sqrt(xp.maximum(eta2, 0.0))
+    return restitution_by_definition(
+        vy, vy_after, tau0, tau1, work_compression_normal, work_restitution_normal
     )
 
 

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import core
 from .._validation import as_real_array, broadcast, check, validated
 from ..core import planar as kernels
 from .impact import State, _restitution
@@ -303,8 +304,8 @@ def _solve(kind, body, vx, vy, omega, mu, kappa, law):  # type: ignore[no-untype
     tau_m = kernels.planar_min_energy_impulse(*contact, p.tau_slip, p.tau_end)
     f_m = kernels.planar_state_at(tau_m, *contact, p.tau_slip).friction_impulse
     at_min = body.apply_impulse(vx_, vy_, om_, f_m, tau_m)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        energetic = np.sqrt(np.maximum(-wrn / wcn, 0.0))
+    kappas = core.restitution_by_definition(v0, p.normal_after, p.tau_compression, p.tau_end,
+                                            wcn, wrn)  # fmt: skip
     return kind(
         body=body,
         law=law,
@@ -332,8 +333,8 @@ def _solve(kind, body, vx, vy, omega, mu, kappa, law):  # type: ignore[no-untype
         work_restitution_tangential=freeze(wrt),
         min_kinetic_energy=freeze(body.kinetic_energy(*at_min)),
         tau_min_energy=freeze(tau_m),
-        newton_restitution=freeze(-p.normal_after / v0),
-        poisson_restitution=freeze((p.tau_end - p.tau_compression) / p.tau_compression),
-        energetic_restitution=freeze(energetic),
+        newton_restitution=freeze(kappas.newton),
+        poisson_restitution=freeze(kappas.poisson),
+        energetic_restitution=freeze(kappas.energetic),
         creates_energy=freeze(loss < -_ENERGY_RTOL * e0),
     )
