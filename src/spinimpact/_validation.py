@@ -26,6 +26,7 @@ import numpy as np
 __all__ = [
     "as_real_array",
     "scalar",
+    "whole",
     "require",
     "available",
     "broadcast",
@@ -177,6 +178,19 @@ def scalar(name: str, value: object, rules_for: str | None = None, *, why: str =
         raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}"
                          f"{reason}")  # fmt: skip
     return float(arr)
+
+
+def whole(name: str, value: object, low: int | None = None) -> int:
+    """A whole number (a Python or NumPy integer, not a bool), optionally ``>= low``.
+
+    Raises ``TypeError`` for anything else (``2.5``, ``"5"``, ``True``) and
+    ``ValueError`` below ``low``; both name the parameter and the value.
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if low is not None and value < low:
+        raise ValueError(f"{name} must be an integer >= {low}, got {value!r}")
+    return int(value)
 
 
 def setting(

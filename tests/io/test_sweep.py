@@ -256,3 +256,11 @@ def test_wrong_types_and_values_of_counts():
         Sweep(BODY, axes, samples=10, chunk_size=True)
     with pytest.raises(TypeError, match="body must be a spinimpact.Body"):
         Sweep("ball", axes, samples=10)
+
+
+@pytest.mark.parametrize(("seed", "error"), [("x", TypeError), (1.5, TypeError), (-1, ValueError)])
+def test_seed_is_named_when_wrong(seed, error):
+    given = {"vx": "uniform:0:1", "vy": -1.0, "omega": 0.0, "mu": 0.3, "kappa": 0.5}
+    axes = {n: parse_axis(n, v) for n, v in given.items()}
+    with pytest.raises(error, match=r"^seed must be an integer"):
+        Sweep(Body.ring(mass=1.0, radius=0.1), axes, samples=10, seed=seed)

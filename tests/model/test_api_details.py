@@ -103,3 +103,16 @@ def test_history_arguments():
         one.history(n=1)
     with pytest.raises(ValueError, match=r"tau must be in \[0, tau1"):
         one.history(tau=[0.0, 2 * float(one.tau1)])
+
+
+@pytest.mark.parametrize(("n", "error"), [("5", TypeError), (2.5, TypeError), (True, TypeError),
+                                          (1, ValueError), (-3, ValueError)])  # fmt: skip
+def test_history_n_is_a_whole_number(n, error):
+    imp = solve(Body.ring(mass=1, radius=1), 1.0, -1.0, 0.0, mu=0.1, kappa=0.5)
+    with pytest.raises(error, match=r"^n must be an integer"):
+        imp.history(n)
+
+
+def test_preset_name_of_the_wrong_type():
+    with pytest.raises(TypeError, match="body must be one of"):
+        Body.preset(["ring"], mass=1.0, radius=1.0)

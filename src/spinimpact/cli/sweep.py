@@ -81,8 +81,9 @@ def _dask_client(address: str | None) -> Any:
     "--fields",
     default="after_vx,after_vy,after_omega,regime",
     show_default=True,
-    help="Comma-separated fields to write (after_vx, after_vy, after_omega, regime, "
-    "energy_loss, impulse_ratio, slip_after).",
+    help="Comma-separated fields to write, named as the Impact's columns (after_vx, "
+    "after_vy, after_omega, regime, slip_before, slip_after, impulse_ratio, "
+    "dissipated_energy, dissipated_fraction; energy_loss is an alias of dissipated_fraction).",
 )
 @click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
 @click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")

@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import require, validated
+from .._validation import require, validated, whole
 from ..model.body import Body
 from ._axes import INPUTS, Axis, parse_axis
 from ._fields import ALIASES, FIELDS, REBOUND_FIELDS, field_name, rebound_fields
@@ -95,6 +95,7 @@ class Sweep:
     _body: dict[str, float] = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "seed", whole("seed", self.seed, 0))
         b = self.body
         if not isinstance(b, Body):
             raise TypeError(f"body must be a spinimpact.Body, got {type(b).__name__}")

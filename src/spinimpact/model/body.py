@@ -104,6 +104,8 @@ class Body:
     def preset(cls, name: str, *, mass: float, radius: float) -> Body:
         """Build a named preset: one of ``solid-disk``, ``ring``, ``solid-sphere``,
         ``spherical-shell``."""
+        if not isinstance(name, str):
+            raise TypeError(f"body must be one of {', '.join(PRESETS)}; got {name!r}")
         if name not in PRESETS:
             raise ValueError(f"body must be one of {', '.join(PRESETS)}; got {name!r}")
         r = as_real_array("radius", radius)

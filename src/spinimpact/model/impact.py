@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import as_real_array, broadcast, check, validated
+from .._validation import as_real_array, broadcast, check, validated, whole
 from . import result
 from .body import Body
 from .result import Result, freeze
@@ -206,8 +206,7 @@ class Impact(Result):
             )
         tau0, tau_star, tau1 = float(self.tau0), float(self.tau_star), float(self.tau1)
         if tau is None:
-            if not isinstance(n, int | np.integer) or n < 2:
-                raise ValueError(f"n must be an integer >= 2, got {n!r}")
+            n = whole("n", n, 2)
             marks = [t for t in (tau0, tau_star) if 0.0 < t < tau1]
             grid = np.union1d(np.linspace(0.0, tau1, int(n)), marks)
         else:

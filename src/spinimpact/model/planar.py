@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import as_real_array, broadcast, check, validated
+from .._validation import as_real_array, broadcast, check, validated, whole
 from ..core import planar as kernels
 from .impact import State, _restitution
 from .planar_body import Pendulum, PlanarBody
@@ -133,8 +133,7 @@ class PlanarImpact(Result):
                 f"history() describes one impact, but this PlanarImpact has shape {self.shape};"
                 " select one with impact[i]"
             )
-        if not isinstance(n, int | np.integer) or isinstance(n, bool) or n < 2:
-            raise ValueError(f"n must be an integer >= 2, got {n!r}")
+        n = whole("n", n, 2)
         t0, ts, t1 = float(self.tau0), float(self.tau_star), float(self.tau1)
         grid = np.union1d(np.linspace(0.0, t1, int(n)), [t for t in (t0, ts) if 0 < t < t1])
         b, w = self.body, self.body.collision_matrix

@@ -184,7 +184,8 @@ class PlanarBody:
         g = _positive("gyration", gyration)
         e = _number("offset", offset)
         check("offset", np.asarray(e), lambda x: x >= 0, ">= 0")
-        check("offset", np.asarray(e) - np.asarray(r), lambda x: x < 0, "< radius")
+        if np.any(np.asarray(e) >= np.asarray(r)):
+            raise ValueError(f"offset must be < radius ({r!r}), got {e!r}")
         th = _number("angle", angle)
         return cls(m, m * g * g, -e * np.cos(th), -r - e * np.sin(th), name="eccentric-disk")
 

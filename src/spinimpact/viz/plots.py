@@ -253,7 +253,7 @@ def plot_map(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 400
     axes[0, 1].contour(a, b, imp.after.vx, levels=[0], colors="#e15759", linewidths=1.6)
     axes[0, 1].contour(a, b, imp.after.omega, levels=[0], colors="#2f7f79", linewidths=1.6)
 
-    loss = imp.dissipated_energy / imp.kinetic_energy_before
+    loss = imp.dissipated_fraction
     show(axes[0, 2], loss, "energy lost ΔE/E⁻", "viridis", "ΔE/E⁻", vmin=0, vmax=1)
     show(
         axes[1, 0],
