@@ -2,8 +2,9 @@
 
 One module per group of commands: :mod:`~spinimpact.cli.solve` (``solve``,
 ``report``), :mod:`~spinimpact.cli.batch`, :mod:`~spinimpact.cli.sweep`,
-:mod:`~spinimpact.cli.simulate` and :mod:`~spinimpact.cli.pictures` (``map``,
-``figures``); what they share is in :mod:`~spinimpact.cli._common`.
+:mod:`~spinimpact.cli.simulate`, :mod:`~spinimpact.cli.pictures` (``map``,
+``figures``) and :mod:`~spinimpact.cli.planar`; what they share is in
+:mod:`~spinimpact.cli._common`.
 
 Errors in the input are reported as one line on stderr with exit status 2 and
 no traceback (:func:`~spinimpact.cli._common.errors_to_exit_2`).
@@ -19,6 +20,7 @@ import numpy as np
 from ._common import DEFAULTS, errors_to_exit_2
 from .batch import batch_command
 from .pictures import figures_command, map_command
+from .planar import planar_command
 from .simulate import simulate_command
 from .solve import report_command, solve_command
 from .sweep import sweep_command
@@ -44,6 +46,7 @@ for _command in (
     sweep_command,
     map_command,
     figures_command,
+    planar_command,
 ):
     cli.add_command(_command)
 

@@ -19,8 +19,9 @@ from .tables import Table, impact_tables, number, regime_summary, simulation_tab
 
 if TYPE_CHECKING:
     from ..model.dynamics import Simulation
+    from ..model.planar import PlanarImpact
 
-__all__ = ["print_report", "print_simulation"]
+__all__ = ["print_report", "print_simulation", "planar_tables", "print_planar_report"]
 
 _STYLES = {"creates energy": "bold red"}
 
@@ -123,3 +124,115 @@ def print_simulation(sim: Simulation, console: Console | None = None) -> None:
     table = simulation_table(sim)
     console.print(_rich(table))
     console.print(Text(table.note))
+
+
+def planar_tables(imp: PlanarImpact) -> tuple[Table, ...]:
+    """The tables of a planar impact's report, in ASCII labels.
+
+    Parameters
+    ----------
+    imp : PlanarImpact
+        A single impact (shape ``()``), from :func:`spinimpact.solve_planar` or
+        :func:`spinimpact.solve_pendulum`.
+
+    Returns
+    -------
+    tuple of Table
+        Keys ``inputs`` (body, its geometry in kg, kg m^2 and m, the collision matrix in
+        1/kg, mu, kappa, the law), ``rebound`` (centre velocity, spin and the contact's
+        slip and normal velocity, before and after), ``impulses`` (tau0, tau*, tau1, f1 in
+        N s; mu_hat), ``energy`` (J and share of E-), ``works`` (J, by phase) and
+        ``coefficients`` (the three restitution coefficients; whether energy is created).
+    """
+    from .planar import LAW_NAMES
+
+    if imp.shape != ():
+        raise ValueError(f"a report describes one impact; this PlanarImpact has shape {imp.shape}")
+    b, w, e0, n = imp.body, imp.body.collision_matrix, float(imp.kinetic_energy_before), number
+    units = {"mass": "kg", "inertia": "kg m^2"}
+    wn = (imp.work_compression_normal, imp.work_restitution_normal)
+    wt = (imp.work_compression_tangential, imp.work_restitution_tangential)
+    phases = ("compression", "restitution", "whole impact")
+    energy = {
+        "kinetic energy before, E-": e0,
+        "kinetic energy after, E+": imp.kinetic_energy_after,
+        "dissipated, E- - E+": imp.dissipated_energy,
+        "minimum during impact, Em": imp.min_kinetic_energy,
+    }
+    velocities = {
+        "vx (m/s)": (imp.before.vx, imp.after.vx),
+        "vy (m/s)": (imp.before.vy, imp.after.vy),
+        "omega (rad/s)": (imp.before.omega, imp.after.omega),
+        "contact slip u (m/s)": (imp.slip_before, imp.slip_after),
+        "contact normal velocity v (m/s)": (imp.normal_velocity_before, imp.normal_velocity_after),
+    }
+    rows: dict[str, tuple] = {
+        "inputs": (
+            ("body", str(b.name)),
+            *((name, n(getattr(b, name), units.get(name, "m"))) for name in b.COLUMNS),
+            ("W_tt, W_tn, W_nn (1/kg)", ", ".join(n(x) for x in (w.tt, w.tn, w.nn))),
+            ("friction mu", n(imp.mu)),
+            ("restitution kappa", n(imp.kappa)),
+            ("restitution law", LAW_NAMES[imp.law]),
+        ),
+        "rebound": tuple((k, n(x), n(y)) for k, (x, y) in velocities.items()),
+        "impulses": (
+            ("end of compression, tau0", n(imp.tau0)),
+            ("end of slip, tau*", n(imp.tau_star)),
+            ("end of impact, tau1", n(imp.tau1)),
+            ("tangential impulse, f1", n(imp.tangential_impulse)),
+            ("mu_hat = f1/tau1 (no unit)", n(imp.impulse_ratio)),
+        ),
+        "energy": tuple((k, n(x), f"{float(x) / e0:.2%}" if e0 else "") for k, x in energy.items()),
+        "works": tuple(
+            (p, n(x), n(y), n(x + y))
+            for p, x, y in zip(phases, (*wn, sum(wn)), (*wt, sum(wt)), strict=True)
+        ),
+        "coefficients": (
+            ("Newton restitution -v+/v-", n(imp.newton_restitution)),
+            ("Poisson restitution (tau1-tau0)/tau0", n(imp.poisson_restitution)),
+            ("energetic restitution sqrt(-Wr^n/Wc^n)", n(imp.energetic_restitution)),
+            ("creates energy (E+ > E-)", "yes" if bool(imp.creates_energy) else "no"),
+        ),
+    }
+    heads = {
+        "inputs": ("Inputs", ("input", "value")),
+        "rebound": ("Rebound", ("", "before", "after")),
+        "impulses": ("Impulses", ("impulse", "N s")),
+        "energy": ("Energy budget", ("energy", "J", "of E-")),
+        "works": (
+            "Works of the contact forces",
+            ("phase", "normal (J)", "friction (J)", "total (J)"),
+        ),
+        "coefficients": ("Coefficients", ("coefficient", "value")),
+    }
+    note = {"energy": f"Minimum energy at tau_m = {n(imp.tau_min_energy, 'N s')}"}
+    return tuple(Table(k, *heads[k], rows[k], note.get(k, "")) for k in heads)
+
+
+def print_planar_report(imp: PlanarImpact, console: Console | None = None) -> None:
+    """Print the report of one planar impact (:func:`spinimpact.solve_planar` or
+    :func:`spinimpact.solve_pendulum`): the regime and law, then the tables of
+    :func:`planar_tables` (inputs with the collision matrix,
+    rebound with the contact velocity, impulses, energy budget, works, coefficients).
+
+    Parameters
+    ----------
+    imp : PlanarImpact
+        A single impact (shape ``()``).
+    console : rich.console.Console, optional
+        Where to print; by default standard output, without syntax highlighting.
+    """
+    from .planar import LAW_NAMES
+
+    tables = planar_tables(imp)
+    console = _console(console)
+    console.print(Text(f"Planar impact: {imp.body.name} on a rough surface", style="bold"))
+    gain = ("   creates energy", "bold red") if bool(imp.creates_energy) else ""
+    law = f"   law: {LAW_NAMES[imp.law]}"
+    console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), law, gain))
+    for table in tables:
+        console.print()
+        console.print(_rich(table))
+        if table.note:
+            console.print(Text(table.note))

@@ -1,0 +1,268 @@
+"""``spinimpact planar``: the impact of a planar body touching the surface anywhere (a rod,
+a block on a corner, an eccentric disk) or of a pendulum on a fixed pivot.
+
+Prints the report (or JSON with ``--json``) and, on request, Routh's diagram
+(``--plot``), the three restitution laws side by side (``--laws-plot``) and the map of
+regimes over the body's angle and the slip ratio (``--map-plot``). Angles are
+taken in radians (``--angle``, SI) or in degrees (``--angle-deg``), converted once here.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import click
+
+from ..model.planar import LAWS, PlanarImpact, solve_pendulum, solve_planar
+from ..model.planar_body import Pendulum, PlanarBody
+from ._common import jsonable
+
+__all__ = ["planar_command", "GEOMETRY", "make_planar_body", "solve_planar_options"]
+
+#: Each body's geometry options and their defaults (m; the angle in degrees).
+GEOMETRY: dict[str, dict[str, float]] = {
+    "rod": {"length": 1.0, "angle_deg": 45.0},
+    "block": {"width": 0.2, "height": 0.1, "angle_deg": 30.0},
+    "eccentric-disk": {"radius": 0.1, "gyration": 0.07, "offset": 0.02, "angle_deg": 0.0},
+    "pendulum": {"length": 1.0, "angle_deg": 60.0},
+}
+_SPEED = 2.0  #: default |omega| of a pendulum, rad/s, toward the surface
+_GEOMETRY_OPTIONS = "length width height radius gyration offset angle angle_deg".split()
+
+
+def make_planar_body(body: str, mass: float, geometry: dict[str, Any]) -> PlanarBody | Pendulum:
+    """The body named by ``--body`` with the geometry options the user gave.
+
+    Parameters
+    ----------
+    body : {"rod", "block", "eccentric-disk", "pendulum"}
+    mass : float
+        kg.
+    geometry : dict
+        ``length``, ``width``, ``height``, ``radius``, ``gyration``, ``offset`` (m),
+        ``angle`` (rad) and ``angle_deg`` (degrees); ``None`` where not given.
+
+    Raises
+    ------
+    click.UsageError
+        An option the body does not take, or both ``--angle`` and ``--angle-deg``.
+    ValueError
+        A value out of range (from the body's preset).
+    """
+    spec = GEOMETRY[body]
+    for name, value in geometry.items():
+        if value is not None and name not in spec and name != "angle":
+            raise click.UsageError(
+                f"--{name} does not apply to --body {body} (it takes "
+                + ", ".join(f"--{n.replace('_', '-')}" for n in spec)
+                + " or --angle)"
+            )
+    if geometry.get("angle") is not None and geometry.get("angle_deg") is not None:
+        raise click.UsageError("give either --angle (rad) or --angle-deg (degrees), not both")
+    size = {n: spec[n] if geometry.get(n) is None else geometry[n] for n in spec}
+    deg = size.pop("angle_deg")
+    in_rad = geometry.get("angle") is not None
+    angle = geometry["angle"] if in_rad else math.radians(deg)
+    preset = {
+        "rod": PlanarBody.rod,
+        "block": PlanarBody.block,
+        "eccentric-disk": PlanarBody.eccentric_disk,
+        "pendulum": Pendulum.rod,
+    }[body]
+    try:
+        return preset(mass=mass, angle=angle, **size)
+    except ValueError as exc:  # the preset speaks radians; say what the user typed
+        if in_rad or not str(exc).startswith("angle"):
+            raise
+        raise ValueError(f"--angle-deg {deg:g} is {angle:.6g} rad: {exc}") from None
+
+
+def solve_planar_options(o: dict[str, Any]) -> tuple[PlanarImpact, dict[str, Any]]:
+    """The impact the command's options describe, and the incidence it used.
+
+    Returns ``(impact, incidence)`` with ``incidence`` the keyword arguments of
+    :func:`~spinimpact.viz.planar.plot_laws` (``body``, ``vx``, ``vy``, ``omega``,
+    ``mu``, ``kappa``).
+    """
+    body = make_planar_body(o["body"], o["mass"], {n: o[n] for n in _GEOMETRY_OPTIONS})
+    surface = {"mu": o["mu"], "kappa": o["kappa"]}
+    if isinstance(body, Pendulum):
+        for name in ("vx", "vy"):
+            if o[name] is not None:
+                raise click.UsageError(
+                    f"--{name} does not apply to --body pendulum: its centre moves with --omega"
+                )
+        # default: |omega| = 2 rad/s, turning the contact toward the surface (omega px < 0)
+        omega = o["omega"] if o["omega"] is not None else -math.copysign(_SPEED, float(body.px))
+        imp = solve_pendulum(body, omega, law=o["law"], **surface)
+        return imp, {"body": body, "vx": None, "vy": None, "omega": omega, **surface}
+    vx = 1.0 if o["vx"] is None else o["vx"]
+    vy = -1.0 if o["vy"] is None else o["vy"]
+    omega = 0.0 if o["omega"] is None else o["omega"]
+    imp = solve_planar(body, vx, vy, omega, law=o["law"], **surface)
+    return imp, {"body": body, "vx": vx, "vy": vy, "omega": omega, **surface}
+
+
+def _image(option: str, path: str | None) -> str | None:
+    """The image format of ``path`` from its suffix (png, svg or pdf), or ``None``."""
+    if path is None:
+        return None
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in ("png", "svg", "pdf"):
+        raise click.UsageError(f"{option} must end in .png, .svg or .pdf, got {path!r}")
+    return fmt
+
+
+def _length(name: str, which: str) -> Any:
+    return click.option(f"--{name}", type=float, default=None, help=which)
+
+
+@click.command("planar")
+@click.option(
+    "--body",
+    type=click.Choice(list(GEOMETRY)),
+    default="rod",
+    show_default=True,
+    help="A slender rod on its end, a block on a corner, a disk with its centre of "
+    "mass off-centre, or a rod pendulum on a fixed pivot.",
+)
+@click.option("--mass", type=float, default=1.0, show_default=True, help="Mass m, kg.")
+@_length("length", "Length L, m (rod, pendulum; default 1).")
+@_length("width", "Side along the tilt, m (block; default 0.2).")
+@_length("height", "Other side, m (block; default 0.1).")
+@_length("radius", "Rim radius R, m (eccentric-disk; default 0.1).")
+@_length(
+    "gyration", "Radius of gyration about the centre of mass, m (eccentric-disk; default 0.07)."
+)
+@_length("offset", "Centre of mass from the disk's centre, m, < R (eccentric-disk; default 0.02).")
+@click.option(
+    "--angle",
+    type=float,
+    default=None,
+    help="Angle in radians (SI); see --angle-deg for its meaning per body.",
+)
+@click.option(
+    "--angle-deg",
+    type=float,
+    default=None,
+    help="The same angle in degrees, converted once to radians: rod: to the surface "
+    "(default 45); block: tilt of --width (30); eccentric-disk: direction of the "
+    "offset (0); pendulum: below the horizontal (60).",
+)
+@click.option(
+    "--vx",
+    type=float,
+    default=None,
+    help="Centre velocity along the surface, m/s (default 1; not for a pendulum).",
+)
+@click.option(
+    "--vy",
+    type=float,
+    default=None,
+    help="Centre normal velocity, m/s (default -1; not for a pendulum).",
+)
+@click.option(
+    "--omega",
+    type=float,
+    default=None,
+    help="Spin, rad/s, counter-clockwise positive (default 0; pendulum: 2 rad/s "
+    "toward the surface).",
+)
+@click.option("--mu", type=float, default=0.3, show_default=True, help="Friction >= 0.")
+@click.option(
+    "--kappa", type=float, default=0.8, show_default=True, help="Restitution of --law, in [0, 1]."
+)
+@click.option(
+    "--law",
+    type=click.Choice(list(LAWS)),
+    default="poisson",
+    show_default=True,
+    help="Newton (kinematic), Poisson (kinetic) or Stronge (energetic) restitution.",
+)
+@click.option(
+    "--json",
+    "as_json",
+    is_flag=True,
+    help="Print every PlanarImpact field as JSON (infinite or undefined values are null).",
+)
+@click.option(
+    "--plot", default=None, help="Write Routh's diagram to this image (.png, .svg, .pdf)."
+)
+@click.option(
+    "--laws-plot", default=None, help="Write the three restitution laws side by side to this image."
+)
+@click.option(
+    "--map-plot",
+    default=None,
+    help="Write the map of regimes, and of where Newton's law creates energy, over the body's "
+    "angle (its whole range: --angle is ignored) and the slip ratio u-/|v-| (not for a pendulum).",
+)
+@click.option(
+    "--resolution",
+    type=click.IntRange(2, 2000),
+    default=200,
+    show_default=True,
+    help="Grid points per axis of --map-plot.",
+)
+@click.option(
+    "--dpi",
+    type=click.IntRange(50, 600),
+    default=110,
+    show_default=True,
+    help="Image dots per inch.",
+)
+def planar_command(
+    as_json: bool,
+    plot: str | None,
+    laws_plot: str | None,
+    map_plot: str | None,
+    resolution: int,
+    dpi: int,
+    **options: Any,
+) -> None:
+    """Solve the impact of a planar body touching the surface off its centre line.
+
+    The impulses couple through the collision matrix W: the slip can stop, stick or
+    reverse, and Newton's, Poisson's and Stronge's laws differ. SI units; angles in
+    radians with --angle, or in degrees with --angle-deg.
+    """
+    paths = {"--plot": plot, "--laws-plot": laws_plot, "--map-plot": map_plot}
+    formats = {option: _image(option, path) for option, path in paths.items()}
+    if map_plot is not None and options["body"] == "pendulum":
+        raise click.UsageError("--map-plot needs --body rod, block or eccentric-disk")
+    imp, incidence = solve_planar_options(options)
+    if as_json:
+        click.echo(json.dumps(jsonable(imp.to_dict()), indent=2))
+    else:
+        from ..viz.report import print_planar_report
+
+        print_planar_report(imp)
+    if not any(paths.values()):
+        return
+    from ..io import atomic_path
+    from ..viz.planar import plot_laws, plot_planar_map, plot_routh_planar
+
+    def planar_map() -> Any:  # the body's geometry at every angle of the map
+        sizes = {n: options[n] for n in _GEOMETRY_OPTIONS if not n.startswith("angle")}
+        o = options
+
+        def factory(angle: Any) -> Any:
+            return make_planar_body(o["body"], o["mass"], {**sizes, "angle": angle})
+
+        return plot_planar_map(factory, mu=o["mu"], kappa=o["kappa"], law=o["law"], n=resolution)
+
+    draws = {
+        "--plot": lambda: plot_routh_planar(imp),
+        "--laws-plot": lambda: plot_laws(**incidence),
+        "--map-plot": planar_map,
+    }
+    for option, draw in draws.items():
+        path = paths[option]
+        if path is not None:
+            with atomic_path(path) as tmp:
+                draw().savefig(tmp, format=formats[option], dpi=dpi)
+            if not as_json:
+                click.echo(f"wrote {path}")
