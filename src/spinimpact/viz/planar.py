@@ -304,7 +304,9 @@ def plot_planar_map(
     The body falls without spin, ``v_y^- = -1`` m/s and ``v_x^- = u^-``, so the contact
     velocity is ``(u^-, v^-)``; the regime and the sign of the energy change depend on
     the incidence only through it. The whole grid is one call of
-    :func:`~spinimpact.solve_planar` per law (Newton's, and ``law`` if another).
+    :func:`~spinimpact.solve_planar` per law (Newton's, and ``law`` if another). The
+    regimes come out the same under every law: an impact that ends before the first slip
+    phase does ends where ``v`` is linear in ``tau``, and there the three laws agree.
     """
     from matplotlib.colors import ListedColormap, Normalize, TwoSlopeNorm
     from matplotlib.patches import Patch
