@@ -134,7 +134,8 @@ def _phases(slip, vn, a, b, d, mu):
     r1 = b * s1 + d  # dv/dtau in the first phase
     decays = (slip != 0) & (sigma * b < a * mu)
     gap = a * mu - sigma * b
-    tau_s = xp.where(decays, xp.abs(slip) / _safe(xp, decays, gap), xp.inf)
+    with quiet(xp, over="ignore"):  # a vanishing decay rate: tau_s overflows to inf, rightly
+        tau_s = xp.where(decays, xp.abs(slip) / _safe(xp, decays, gap), xp.inf)
     tau_s = xp.where(slip == 0, 0.0, tau_s)
     stick = xp.abs(b) <= a * mu
     sb = xp.sign(b)
@@ -188,12 +189,13 @@ def planar_process(slip, vn, w_tt, w_tn, w_nn, mu, kappa, law):
     xp, (kappa, law) = arrays(kappa, law)
     finite = tau_s != xp.inf
     ts = xp.where(finite, tau_s, 0.0)  # finite stand-in where the first phase never ends
-    v1 = v0 + r1 * ts  # v at tau_s
+    with quiet(xp, over="ignore"):  # a huge tau_s: only branches that where() discards
+        v1 = v0 + r1 * ts  # v at tau_s
     # Rank one (a pendulum): u and v are proportional and vanish together, at tau_s.
     _, (a, b, d) = arrays(w_tt, w_tn, w_nn)
     together = finite & (a * d - b * b <= _SINGULAR * a * d)
     v1 = xp.where(together, 0.0, v1)
-    with quiet(xp, divide="ignore", invalid="ignore"):
+    with quiet(xp, divide="ignore", invalid="ignore", over="ignore"):
         # compression: in the first phase, or in the second
         ends1 = _first_reaches(xp, v0, r1, finite, ts, 0.0 * v0) & ~together
         tau_c = xp.where(ends1, -v0 / _safe(xp, ends1, r1), ts - v1 / _safe(xp, ~ends1, r2))
@@ -260,9 +262,10 @@ def planar_state_at(tau, slip, vn, w_tt, w_tn, w_nn, mu, tau_slip):
     before = tau < tau_slip
     late = xp.where(before, 0.0, tau - ts)
     early = xp.minimum(tau, tau_slip)
-    f = s1 * early + s2 * late
-    u = xp.where(before, u0 + k1 * tau, k2 * late)
-    v = xp.where(before, v0 + r1 * tau, v0 + r1 * ts + r2 * late)
+    with quiet(xp, over="ignore", invalid="ignore"):  # a huge tau_s in discarded branches
+        f = s1 * early + s2 * late
+        u = xp.where(before, u0 + k1 * tau, k2 * late)
+        v = xp.where(before, v0 + r1 * tau, v0 + r1 * ts + r2 * late)
     return PlanarState(f + 0.0, u + 0.0, v + 0.0, xp.where(before, s1, s2) + 0.0)
 
 
