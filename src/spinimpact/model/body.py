@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._validation import MAX_ZETA, as_real_array, check, validated
+from .result import BodyColumns
 
 __all__ = ["Body", "PRESETS"]
 
@@ -20,7 +21,7 @@ PRESETS: dict[str, float] = {
 
 
 @dataclass(frozen=True, eq=False)
-class Body:
+class Body(BodyColumns):
     """A rigid body that touches the surface at radius ``R`` from its centre.
 
     Parameters
@@ -85,16 +86,6 @@ class Body:
 
     #: The body's flat column names in results (:meth:`columns`).
     COLUMNS = ("mass", "radius", "gyration", "zeta")
-
-    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
-        """``mass, radius, gyration, zeta`` broadcast to ``shape`` (a result's columns)."""
-        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
-
-    def to_dict(self) -> dict[str, object]:
-        """Name, mass, radius, gyration and zeta as plain Python values."""
-        out: dict[str, object] = {"name": self.name}
-        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
-        return out
 
     @property
     def inertia(self) -> float | np.ndarray:

@@ -18,6 +18,7 @@ from .. import core
 from .._validation import as_real_array, check, validated
 from ..core import planar as kernels
 from .body import Body
+from .result import BodyColumns
 
 __all__ = ["PlanarBody", "Pendulum"]
 
@@ -32,7 +33,7 @@ def _positive(name: str, value: object) -> float | np.ndarray:
 
 
 @dataclass(frozen=True, eq=False)
-class PlanarBody:
+class PlanarBody(BodyColumns):
     """A rigid body in plane motion touching the surface at offset ``r`` from its centre
     of mass.
 
@@ -103,15 +104,6 @@ class PlanarBody:
     def kinetic_energy(self, vx, vy, omega):  # type: ignore[no-untyped-def]
         """``m (vx^2 + vy^2)/2 + J omega^2/2``, J."""
         return core.kinetic_energy(vx, vy, omega, self.mass, self.inertia)
-
-    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
-        """``mass, inertia, rx, ry`` broadcast to ``shape``."""
-        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
-
-    def to_dict(self) -> dict[str, object]:
-        out: dict[str, object] = {"name": self.name}
-        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
-        return out
 
     # -- presets -------------------------------------------------------------------------
     @classmethod
@@ -191,7 +183,7 @@ class PlanarBody:
 
 
 @dataclass(frozen=True, eq=False)
-class Pendulum:
+class Pendulum(BodyColumns):
     """A rigid pendulum on a fixed frictionless pivot, striking the surface at one point.
 
     Parameters
@@ -262,14 +254,6 @@ class Pendulum:
     def kinetic_energy(self, vx, vy, omega):  # type: ignore[no-untyped-def]
         """``m (vx^2 + vy^2)/2 + J_G omega^2/2`` (``= J_O omega^2/2``), J."""
         return core.kinetic_energy(vx, vy, omega, self.mass, self.inertia)
-
-    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
-        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
-
-    def to_dict(self) -> dict[str, object]:
-        out: dict[str, object] = {"name": self.name}
-        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
-        return out
 
     @classmethod
     def rod(cls, *, mass: object, length: object, angle: object) -> Pendulum:

@@ -23,7 +23,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-__all__ = ["Result", "freeze"]
+__all__ = ["Result", "BodyColumns", "freeze"]
 
 Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give arrays
 
@@ -224,3 +224,24 @@ class Result:
 
 def _is_array(v: Any) -> bool:
     return isinstance(v, np.ndarray | np.generic)
+
+
+class BodyColumns:
+    """Mixin for body classes: their ``COLUMNS`` as result columns and as plain values.
+
+    A body names its per-impact numbers in ``COLUMNS`` (``mass``, ``radius``, ...); a
+    result holding the body repeats them as columns (:meth:`Result.columns`).
+    """
+
+    COLUMNS: ClassVar[tuple[str, ...]] = ()
+    name: str
+
+    def columns(self, shape: tuple[int, ...]) -> dict[str, np.ndarray]:
+        """The ``COLUMNS`` broadcast to ``shape``."""
+        return {n: np.broadcast_to(np.asarray(getattr(self, n)), shape) for n in self.COLUMNS}
+
+    def to_dict(self) -> dict[str, object]:
+        """The name and the ``COLUMNS`` as plain Python values."""
+        out: dict[str, object] = {"name": self.name}
+        out.update({n: np.asarray(getattr(self, n)).tolist() for n in self.COLUMNS})
+        return out
