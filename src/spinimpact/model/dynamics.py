@@ -93,11 +93,6 @@ class Simulation(Result):
     tau: np.ndarray
     compression: np.ndarray
 
-    def columns(self) -> dict[str, np.ndarray]:
-        """The time series as flat columns of length ``len(t)``; the body's
-        columns and the ``before_*``/``after_*`` velocities are repeated on every row."""
-        return {k: np.broadcast_to(v, self.shape) for k, v in super().columns().items()}
-
     def rigid(self) -> Impact:
         """The rigid-body closed form with ``kappa`` set to this law's Newton
         restitution: Keller's result says the rebound must agree."""
