@@ -127,3 +127,8 @@ def test_light_commands_import_neither_matplotlib_nor_rich(args):
     )
     assert out.returncode == 0, out.stderr
     assert out.stderr.strip() == "[]"
+
+
+def test_simulate_plot_suffix_names_the_plot_option(capsys, tmp_path):
+    status, out, err = run_main(capsys, "simulate", "--plot", str(tmp_path / "x.xyz"))
+    assert_one_line(status, out, err, "--plot must end in .png, .svg or .pdf")

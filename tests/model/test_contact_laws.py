@@ -141,3 +141,20 @@ def test_drop_heights_need_positive_gravity():
         TabulatedRestitution.from_drop_heights([1.0], [0.5], gravity=-9.8)
     moon = TabulatedRestitution.from_drop_heights([1.0], [0.25], gravity=1.62)
     assert float(moon.speeds[0]) == pytest.approx((2 * 1.62) ** 0.5, rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    ("mass", "speed", "error", "message"),
+    [(-0.05, 3.0, ValueError, "mass must be > 0"), ("a", 3.0, TypeError, "mass must be a real"),
+     (0.05, 0.0, ValueError, "speed must be > 0")],
+)  # fmt: skip
+def test_hertz_duration_names_bad_input(mass, speed, error, message):
+    with pytest.raises(error, match=message):
+        HertzContact(youngs_modulus=2e9, poisson_ratio=0.3, radius=0.02).duration(mass, speed)
+
+
+def test_drop_heights_rebound_above_the_drop_is_named():
+    from spinimpact import TabulatedRestitution
+
+    with pytest.raises(ValueError, match=r"^rebound_heights must be <= drop_heights"):
+        TabulatedRestitution.from_drop_heights([1.0], [2.0])

@@ -202,8 +202,8 @@ def progress() -> Any:
     )
 
 
-def image_format(path: str) -> str:
-    """The image format named by the suffix of ``--output`` (``png``, ``svg`` or ``pdf``).
+def image_format(path: str, option: str = "--output") -> str:
+    """The image format named by the suffix of ``option``'s file (``png``, ``svg``, ``pdf``).
 
     Raises
     ------
@@ -212,7 +212,7 @@ def image_format(path: str) -> str:
     """
     fmt = Path(path).suffix.lower().lstrip(".")
     if fmt not in ("png", "svg", "pdf"):
-        raise click.UsageError(f"--output must end in .png, .svg or .pdf, got {path!r}")
+        raise click.UsageError(f"{option} must end in .png, .svg or .pdf, got {path!r}")
     return fmt
 
 

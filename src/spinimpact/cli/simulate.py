@@ -117,7 +117,9 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
     with the rigid-body closed form at the law's own restitution."""
     from ..model.dynamics import simulate
 
-    fmt = image_format(plot_file) if plot_file else None  # a bad name fails before the work
+    fmt = (
+        image_format(plot_file, "--plot") if plot_file else None
+    )  # a bad name fails before the work
     body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
     law = _contact_law(o, float(body.radius))
     sim = simulate(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], contact=law, rtol=o["rtol"])

@@ -294,7 +294,11 @@ class HertzContact(HuntCrossleyContact):
     def duration(self, mass: float, speed: float) -> float:
         """Classical elastic Hertz contact duration in s (ignores ``alpha``) of a
         body of ``mass`` (kg) at impact ``speed`` (m/s)."""
-        return float(kernels.hertz_duration(mass, speed, self.stiffness))
+        m = scalar("mass", mass)
+        v = scalar("speed", speed)
+        check("mass", np.asarray(m), lambda x: x > 0, "> 0")
+        check("speed", np.asarray(v), lambda x: x > 0, "> 0")
+        return float(kernels.hertz_duration(m, v, self.stiffness))
 
     def to_dict(self) -> dict[str, Any]:
         """The material constants, the damping and the resulting stiffness."""

@@ -131,6 +131,8 @@ class TabulatedRestitution(RestitutionModel):
             )
         if np.unique(h0).size != h0.size:
             raise ValueError(f"drop_heights must be distinct, got {h0.tolist()}")
+        check("rebound_heights", h1 - h0, lambda a: a <= 0,
+              "<= drop_heights (a ball cannot rebound higher than it fell)")  # fmt: skip
         order = np.argsort(h0)
         return cls(
             np.sqrt(2.0 * g * h0[order]),
