@@ -170,3 +170,65 @@ def test_help_names_the_units(run_main):
         "newton|poisson|energetic",
     ):
         assert needle in out, needle
+
+
+def test_html_page_is_written_atomically(tmp_path):
+    page = tmp_path / "rod.html"
+    page.write_text("previous")
+    out = run("--length", 0.8, "--angle-deg", 60, "--law", "newton", "--html", page)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.splitlines()[-1] == f"wrote {page}"
+    imp = solve_planar(
+        PlanarBody.rod(mass=1.0, length=0.8, angle=math.radians(60)),
+        1.0,
+        -1.0,
+        0.0,
+        mu=0.3,
+        kappa=0.8,
+        law="newton",
+    )
+    text = page.read_text(encoding="utf-8")
+    assert text.startswith("<!DOCTYPE html>")
+    assert f'id="regime">{imp.regime}<' in text and "law: Newton (kinematic)" in text
+    assert f"<td>{float(imp.tau1):.6g}</td>" in text  # the report's number
+    # the geometry as the user gave it, and the figures
+    assert "<td>length L</td><td>0.8 m</td>" in text
+    assert "<td>angle to the surface</td><td>60° (1.0472 rad)</td>" in text
+    assert text.count('src="data:image/png;base64,') == 2
+    assert [p.name for p in tmp_path.iterdir()] == ["rod.html"]  # no temporary files
+
+
+@pytest.mark.parametrize("body", list(CASES))
+def test_html_page_for_every_body(run_main, tmp_path, body):
+    options, make, _ = CASES[body]
+    target = tmp_path / f"{body}.htm"
+    status, out, err = run_main("--body", body, "--mass", 2, *options, "--json", "--html", target)
+    assert status == 0, err
+    json.loads(out)  # --json keeps standard output to the JSON alone
+    text = target.read_text(encoding="utf-8")
+    assert f"Planar impact: {make().name} on a rough surface" in text
+    assert sorted(p.name for p in tmp_path.iterdir()) == [target.name]
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (["--html", "report.txt"], "--html must end in .html or .htm, got 'report.txt'"),
+        (["--html", "no/such/dir/r.html"], "--html: no such directory 'no/such/dir'"),
+        (["--html", "r.html", "--kappa", 2], "kappa"),
+    ],
+)
+def test_html_bad_input_is_one_line_exit_2(run_main, tmp_path, monkeypatch, args, needle):
+    monkeypatch.chdir(tmp_path)
+    status, out, err = run_main(*args)
+    assert status == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("spinimpact: error: "), err
+    assert needle in lines[0]
+    assert not list(tmp_path.iterdir())  # nothing written, not even a temporary file
+
+
+def test_help_names_the_html_page(run_main):
+    status, out, _ = run_main("--help")
+    assert status == 0
+    assert "--html" in out and "self-contained HTML" in " ".join(out.split())

@@ -1,7 +1,8 @@
 """``spinimpact planar``: the impact of a planar body touching the surface anywhere (a rod,
 a block on a corner, an eccentric disk) or of a pendulum on a fixed pivot.
 
-Prints the report (or JSON with ``--json``) and, on request, Routh's diagram
+Prints the report (or JSON with ``--json``) and, on request, the report as an HTML page
+(``--html``), Routh's diagram
 (``--plot``), the three restitution laws side by side (``--laws-plot``) and the map of
 regimes over the body's angle and the slip ratio (``--map-plot``). Angles are
 taken in radians (``--angle``, SI) or in degrees (``--angle-deg``), converted once here.
@@ -20,7 +21,13 @@ from ..model.planar import LAWS, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
 from ._common import jsonable
 
-__all__ = ["planar_command", "GEOMETRY", "make_planar_body", "solve_planar_options"]
+__all__ = [
+    "planar_command",
+    "GEOMETRY",
+    "make_planar_body",
+    "solve_planar_options",
+    "preset_geometry",
+]
 
 #: Each body's geometry options and their defaults (m; the angle in degrees).
 GEOMETRY: dict[str, dict[str, float]] = {
@@ -116,6 +123,48 @@ def _image(option: str, path: str | None) -> str | None:
     return fmt
 
 
+#: How the page names each geometry option (the angle's meaning depends on the body).
+_MEANING = {
+    "length": "length L",
+    "width": "width (the side along the tilt)",
+    "height": "height",
+    "radius": "rim radius R",
+    "gyration": "radius of gyration about the centre of mass",
+    "offset": "offset of the centre of mass from the disk's centre",
+    "rod": "angle to the surface",
+    "block": "tilt of the width side",
+    "eccentric-disk": "direction of the offset",
+    "pendulum": "angle below the horizontal",
+}
+
+
+def preset_geometry(o: dict[str, Any]) -> dict[str, str]:
+    """The preset's parameters as the command used them (given or default), in words and
+    units, for the HTML page: e.g. ``{"length L": "1 m", "angle to the surface":
+    "45° (0.785398 rad)"}``."""
+    spec = GEOMETRY[o["body"]]
+    out = {
+        _MEANING[n]: f"{(spec[n] if o[n] is None else o[n]):.6g} m"
+        for n in spec
+        if n != "angle_deg"
+    }
+    deg = spec["angle_deg"] if o["angle_deg"] is None else o["angle_deg"]
+    rad = math.radians(deg) if o["angle"] is None else o["angle"]
+    out[_MEANING[o["body"]]] = f"{math.degrees(rad):.6g}° ({rad:.6g} rad)"
+    return out
+
+
+def _html_target(path: str | None) -> None:
+    """Check ``--html`` before anything is solved or printed."""
+    if path is None:
+        return
+    if Path(path).suffix.lower() not in (".html", ".htm"):
+        raise click.UsageError(f"--html must end in .html or .htm, got {path!r}")
+    parent = Path(path).parent
+    if not parent.is_dir():
+        raise click.UsageError(f"--html: no such directory {str(parent)!r}")
+
+
 def _length(name: str, which: str) -> Any:
     return click.option(f"--{name}", type=float, default=None, help=which)
 
@@ -195,6 +244,13 @@ def _length(name: str, which: str) -> Any:
     "--laws-plot", default=None, help="Write the three restitution laws side by side to this image."
 )
 @click.option(
+    "--html",
+    "html_path",
+    default=None,
+    help="Write the report as one self-contained HTML page (.html): the tables, the body's "
+    "geometry, the regime explained, Routh's diagram and the three laws.",
+)
+@click.option(
     "--map-plot",
     default=None,
     help="Write the map of regimes, and of where Newton's law creates energy, over the body's "
@@ -219,6 +275,7 @@ def planar_command(
     plot: str | None,
     laws_plot: str | None,
     map_plot: str | None,
+    html_path: str | None,
     resolution: int,
     dpi: int,
     **options: Any,
@@ -233,6 +290,7 @@ def planar_command(
     formats = {option: _image(option, path) for option, path in paths.items()}
     if map_plot is not None and options["body"] == "pendulum":
         raise click.UsageError("--map-plot needs --body rod, block or eccentric-disk")
+    _html_target(html_path)
     imp, incidence = solve_planar_options(options)
     if as_json:
         click.echo(json.dumps(jsonable(imp.to_dict()), indent=2))
@@ -240,6 +298,15 @@ def planar_command(
         from ..viz.report import print_planar_report
 
         print_planar_report(imp)
+    if html_path is not None:
+        from ..io import atomic_path
+        from ..viz.planar_html import planar_report_html
+
+        page = planar_report_html(imp, geometry=preset_geometry(options))
+        with atomic_path(html_path) as tmp:
+            tmp.write_text(page, encoding="utf-8")
+        if not as_json:
+            click.echo(f"wrote {html_path}")
     if not any(paths.values()):
         return
     from ..io import atomic_path
