@@ -1,4 +1,13 @@
-"""``spinimpact batch``: solve every row of a CSV or Parquet file, in chunks."""
+"""``spinimpact batch``: solve every row of a CSV or Parquet file, in chunks.
+
+The file's columns say what it holds, so no option has to (and none can contradict
+it): ``vx, vy, omega`` alone or with ``mass, radius, gyration, body`` are the paper's
+bodies; columns ``mass, inertia, rx, ry`` (and ``vx, vy, omega``) are free planar
+bodies, solved by :func:`~spinimpact.solve_planar`; ``mass, inertia, gx, gy, px, py``
+(and ``omega``) are pendulums on a pivot, solved by :func:`~spinimpact.solve_pendulum`
+(:func:`spinimpact.io.batch.body_kind`). Reading the kind from the header means a file
+of rods is never solved, silently, as the default sphere.
+"""
 
 from __future__ import annotations
 
@@ -7,9 +16,19 @@ from typing import Any
 
 import click
 
+from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, progress, surface_options
 
 __all__ = ["batch_command"]
+
+#: Options that describe one of the paper's bodies: not for files of planar bodies.
+_PAPER_OPTIONS = ("body", "mass", "radius", "gyration")
+
+
+def _given(ctx: click.Context, name: str) -> bool:
+    """Whether the user typed option ``name`` (rather than leaving its default)."""
+    source = ctx.get_parameter_source(name)
+    return source not in (None, click.core.ParameterSource.DEFAULT)
 
 
 @click.command("batch")
@@ -19,6 +38,13 @@ __all__ = ["batch_command"]
 )
 @body_options
 @surface_options
+@click.option(
+    "--law",
+    type=click.Choice(list(LAWS)),
+    default=None,
+    help="Restitution law of rows without a 'law' cell (planar bodies and pendulums; "
+    "default poisson). The paper's bodies obey the three laws alike.",
+)
 @click.option(
     "--on-error",
     type=click.Choice(["stop", "skip"]),
@@ -34,12 +60,26 @@ __all__ = ["batch_command"]
     show_default=True,
     help="Rows per chunk.",
 )
-def batch_command(source: str, output: str, on_error: str, chunk_size: int, **options: Any) -> None:
-    """Solve every row of SOURCE (CSV or Parquet): columns vx, vy, omega, and
-    optionally mu, kappa, mass, radius, gyration, body per row (the options give
-    the defaults). Writes the input columns plus every scalar Impact field."""
+@click.pass_context
+def batch_command(
+    ctx: click.Context, source: str, output: str, on_error: str, chunk_size: int, **options: Any
+) -> None:
+    """Solve every row of SOURCE (CSV or Parquet); its columns say what it holds.
+
+    \b
+    The paper's bodies: vx, vy, omega, and optionally mu, kappa, mass, radius,
+      gyration, body per row (--body, --mass, --radius, --gyration give the defaults).
+    Free planar bodies: mass, inertia, rx, ry, vx, vy, omega (kg, kg m^2, m, m/s, rad/s;
+      r = contact point - centre of mass, ry < 0), optionally mu, kappa, law.
+    Pendulums on a pivot: mass, inertia, gx, gy, px, py, omega (centre of mass and
+      contact point from the pivot, m), optionally mu, kappa, law.
+
+    Writes the input columns plus every result field that is not an input (for planar
+    files also the law, mu and kappa used where the file lacks them); Parquet fields
+    carry their units.
+    """
     from .._validation import validated
-    from ..io.batch import run_batch
+    from ..io.batch import input_kind, run_batch
 
     o = options
     if o["gyration"] is not None and o["body"] is not None:
@@ -52,6 +92,16 @@ def batch_command(source: str, output: str, on_error: str, chunk_size: int, **op
             except ValueError as exc:
                 raise click.UsageError(f"--{exc}") from None
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
+    defaults["law"] = o["law"]
+    if Path(source).is_file():
+        kind = input_kind(source)
+        given = [f"--{n}" for n in _PAPER_OPTIONS if _given(ctx, n)]
+        if kind != "paper" and given:
+            what = "free planar bodies" if kind == "planar" else "pendulums"
+            raise click.UsageError(
+                f"{given[0]} describes the paper's bodies, but the columns of {source} describe "
+                f"{what}: their mass and geometry come from the file"
+            )
 
     with progress() as bar:
         task = bar.add_task(f"solving {Path(source).name}", total=None)

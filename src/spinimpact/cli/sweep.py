@@ -1,14 +1,92 @@
-"""``spinimpact sweep``: a grid or random samples of incidences in bounded memory."""
+"""``spinimpact sweep``: a grid or random samples of incidences in bounded memory.
+
+For one of the paper's bodies (``--body``, ``--gyration``) by default; with ``--planar``
+for one planar body (``rod``, ``block``, ``eccentric-disk``: the geometry options of
+``spinimpact planar``; ``custom``: ``--inertia, --rx, --ry``) or a rod ``pendulum`` on a
+pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``
+(:class:`~spinimpact.io.planar_sweep.PlanarSweep`). The fields are then the
+:class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones.
+"""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import click
 
+from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
 
 __all__ = ["sweep_command"]
+
+_PLANAR = ("rod", "block", "eccentric-disk", "pendulum", "custom")
+_CUSTOM = ("inertia", "rx", "ry")
+_GEOMETRY = ("length", "width", "height", "radius", "gyration", "offset", "angle", "angle_deg")
+#: Options that only a --planar sweep takes.
+_PLANAR_ONLY = ("law", *_CUSTOM, "length", "width", "height", "offset", "angle", "angle_deg")
+
+
+def _given(ctx: click.Context, name: str) -> bool:
+    """Whether the user typed option ``name`` (rather than leaving its default)."""
+    source = ctx.get_parameter_source(name)
+    return source not in (None, click.core.ParameterSource.DEFAULT)
+
+
+def _flag(name: str) -> str:
+    return "--" + name.replace("_", "-")
+
+
+def _planar_body(ctx: click.Context, o: dict[str, Any]) -> Any:
+    """The :class:`~spinimpact.PlanarBody` or :class:`~spinimpact.Pendulum` of the options.
+
+    Raises
+    ------
+    click.UsageError
+        For ``--body``, an option the body does not take, or a custom body without
+        its three numbers.
+    """
+    from ..model.planar_body import PlanarBody
+    from .planar import GEOMETRY, make_planar_body
+
+    name = o["planar"]
+    if o["body"] is not None:
+        raise click.UsageError("give either --body (the paper's bodies) or --planar, not both")
+    takes = [*_CUSTOM] if name == "custom" else [*GEOMETRY[name], "angle"]
+    for option in (*_CUSTOM, *_GEOMETRY):
+        if _given(ctx, option) and option not in takes:
+            raise click.UsageError(
+                f"{_flag(option)} does not apply to --planar {name} (it takes "
+                + ", ".join(_flag(n) for n in takes)
+                + ")"
+            )
+    if name == "custom":
+        missing = [_flag(n) for n in _CUSTOM if o[n] is None]
+        if missing:
+            raise click.UsageError(
+                f"--planar custom needs --inertia, --rx and --ry ({missing[0]} is missing)"
+            )
+        return PlanarBody(o["mass"], o["inertia"], o["rx"], o["ry"])
+    geometry = {n: o[n] if _given(ctx, n) else None for n in _GEOMETRY}
+    return make_planar_body(name, o["mass"], geometry)
+
+
+def _planar_axes(ctx: click.Context, o: dict[str, Any], body: Any) -> dict[str, str]:
+    """The axes' texts of a planar sweep; unless given, ``omega`` is ``0`` (a free body) or
+    2 rad/s turning the contact toward the surface (a pendulum)."""
+    from ..model.planar_body import Pendulum
+
+    axes = {n: o[n] for n in ("vx", "vy", "omega", "mu", "kappa")}
+    if isinstance(body, Pendulum):
+        for name in ("vx", "vy"):
+            if _given(ctx, name):
+                raise click.UsageError(
+                    f"--{name} does not apply to --planar pendulum: its centre moves with --omega"
+                )
+            del axes[name]
+    if not _given(ctx, "omega"):
+        axes["omega"] = f"{-math.copysign(2.0, float(body.px)):g}" if "vx" not in axes else "0"
+    return axes
 
 
 def _histogram(text: str | None) -> tuple[str, float, float, int] | None:
@@ -52,13 +130,56 @@ def _dask_client(address: str | None) -> Any:
 @click.command("sweep")
 @body_options
 @click.option(
+    "--planar",
+    type=click.Choice(list(_PLANAR)),
+    default=None,
+    help="Sweep a planar body instead: a rod on its end, a block on a corner, an "
+    "eccentric disk, a rod pendulum on a pivot (axes --omega, --mu, --kappa), or a custom "
+    "body (--inertia, --rx, --ry). Geometry as in 'spinimpact planar'; --mass applies.",
+)
+@click.option("--length", type=float, default=None, help="Rod, pendulum: length L, m (default 1).")
+@click.option("--width", type=float, default=None, help="Block: side along the tilt, m (0.2).")
+@click.option("--height", type=float, default=None, help="Block: other side, m (0.1).")
+@click.option(
+    "--offset",
+    type=float,
+    default=None,
+    help="Eccentric disk: centre of mass from the disk's centre, m (0.02); its --radius "
+    "(0.1) and --gyration (0.07) are the options above.",
+)
+@click.option("--angle", type=float, default=None, help="The body's angle, rad (see --angle-deg).")
+@click.option(
+    "--angle-deg",
+    type=float,
+    default=None,
+    help="The same in degrees: rod: to the surface (default 45); block: tilt of --width "
+    "(30); eccentric-disk: direction of the offset (0); pendulum: below the horizontal (60).",
+)
+@click.option("--inertia", type=float, default=None, help="Custom: inertia J about G, kg m^2.")
+@click.option("--rx", type=float, default=None, help="Custom: contact point from G along x, m.")
+@click.option(
+    "--ry", type=float, default=None, help="Custom: contact point from G along y, m, < 0."
+)
+@click.option(
+    "--law",
+    type=click.Choice(list(LAWS)),
+    default="poisson",
+    show_default=True,
+    help="Restitution law of a --planar sweep (the paper's bodies obey the three alike).",
+)
+@click.option(
     "--vx",
     default="-5:5:201",
     show_default=True,
     help="Number, START:STOP:NUM or uniform:LOW:HIGH.",
 )
 @click.option("--vy", default="-4", show_default=True, help="As --vx; values < 0.")
-@click.option("--omega", default="-50:50:201", show_default=True, help="As --vx, rad/s.")
+@click.option(
+    "--omega",
+    default="-50:50:201",
+    show_default=True,
+    help="As --vx, rad/s (--planar: default 0, a pendulum 2 rad/s toward the surface).",
+)
 @click.option("--mu", default=str(DEFAULTS["mu"]), show_default=True, help="As --vx.")
 @click.option("--kappa", default=str(DEFAULTS["kappa"]), show_default=True, help="As --vx.")
 @click.option(
@@ -71,7 +192,13 @@ def _dask_client(address: str | None) -> Any:
     show_default=True,
     help="Seed of the random points (the points also depend on --chunk-size).",
 )
-@click.option("--chunk-size", type=click.IntRange(1), default=1_000_000, show_default=True)
+@click.option(
+    "--chunk-size",
+    type=click.IntRange(1),
+    default=1_000_000,
+    show_default=True,
+    help="Points per chunk (--planar: default 100000, about 60 MB).",
+)
 @click.option(
     "--output",
     default=None,
@@ -83,20 +210,50 @@ def _dask_client(address: str | None) -> Any:
     show_default=True,
     help="Comma-separated fields to write, named as the Impact's columns (after_vx, "
     "after_vy, after_omega, regime, slip_before, slip_after, impulse_ratio, "
-    "dissipated_energy, dissipated_fraction; energy_loss is an alias of dissipated_fraction).",
+    "dissipated_energy, dissipated_fraction; energy_loss is an alias of dissipated_fraction). "
+    "--planar: any PlanarImpact column that is not an input (also creates_energy, tau0, "
+    "tau1, newton_restitution, ...).",
 )
 @click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
 @click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
+@click.pass_context
 def sweep_command(
-    samples, seed, chunk_size, output, fields, histogram, dask_address, **o: Any
+    ctx, samples, seed, chunk_size, output, fields, histogram, dask_address, **o: Any
 ) -> None:
     """Sweep a grid or random samples of incidence conditions in bounded memory:
-    regime fractions (always), a histogram, and/or the fields written to files."""
+    regime fractions (always), a histogram, and/or the fields written to files.
+
+    One of the paper's bodies (--body, --gyration), or with --planar one planar body or
+    pendulum under one --law, e.g. --planar rod --length 1 --angle-deg 45 --law newton."""
     from ..io.sweep import Sweep, parse_axis, run_sweep
 
-    body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
-    axes = {name: parse_axis(name, o[name]) for name in ("vx", "vy", "omega", "mu", "kappa")}
-    sweep = Sweep(body, axes, samples=samples, seed=seed, chunk_size=chunk_size)
+    if o["planar"] is None:
+        for name in _PLANAR_ONLY:
+            if _given(ctx, name):
+                raise click.UsageError(f"{_flag(name)} needs --planar (a planar body's sweep)")
+        body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
+        texts = {name: o[name] for name in ("vx", "vy", "omega", "mu", "kappa")}
+        sweep = Sweep(
+            body,
+            {name: parse_axis(name, text) for name, text in texts.items()},
+            samples=samples,
+            seed=seed,
+            chunk_size=chunk_size,
+        )
+    else:
+        from ..io.planar_sweep import PlanarSweep
+
+        body = _planar_body(ctx, o)
+        texts = _planar_axes(ctx, o, body)
+        size = {"chunk_size": chunk_size} if _given(ctx, "chunk_size") else {}
+        sweep = PlanarSweep(
+            body,
+            {name: parse_axis(name, text) for name, text in texts.items()},
+            samples=samples,
+            seed=seed,
+            law=o["law"],
+            **size,
+        )
     hist = _histogram(histogram)
     client = _dask_client(dask_address)
     try:
@@ -113,9 +270,11 @@ def sweep_command(
     finally:
         if client is not None:
             client.close()
-    click.echo(f"{result.points:,} points")
+    about = f" ({body.name}, {o['law']} law)" if o["planar"] else ""
+    click.echo(f"{result.points:,} points{about}")
+    width = max(map(len, result.regimes)) + 1
     for name, fraction in result.regime_fractions.items():
-        click.echo(f"  {name:18s} {fraction:.6f}")
+        click.echo(f"  {name:{width}s} {fraction:.6f}")
     if result.histogram is not None:
         click.echo(f"histogram of {hist[0]}:")
         for lo, hi, count in zip(

@@ -2,8 +2,10 @@
 
 :func:`atomic_path` writes under a temporary name and renames only on success;
 :mod:`spinimpact.io.batch` solves every row of a CSV/Parquet file in bounded
-memory; :mod:`spinimpact.io.sweep` evaluates grids and random samples, locally
-or on a Dask cluster.
+memory (the paper's bodies, or planar bodies and pendulums by their columns:
+:mod:`spinimpact.io.planar_batch`); :mod:`spinimpact.io.sweep` evaluates grids and
+random samples, locally or on a Dask cluster, for a paper body or
+(:mod:`spinimpact.io.planar_sweep`) a planar body or pendulum.
 """
 
 from .atomic import atomic_path

@@ -8,7 +8,8 @@
   or to a new directory of ``.npy`` files.
 
 Every output is written under a temporary name and renamed only when the whole
-run succeeded (:func:`~spinimpact.io.atomic.atomic_path` for single files).
+run succeeded (:func:`~spinimpact.io.atomic.atomic_path` for single files). Parquet
+files name each column's SI unit in its field metadata (:mod:`spinimpact.io._units`).
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ import numpy as np
 
 from .._validation import require
 from ._tables import Chunk
+from ._units import unit_metadata
 from .atomic import atomic_path, current_umask
 
 __all__ = ["ArrowRows", "ArrowWriter", "CsvRows", "npy_columns", "parquet_columns"]
@@ -138,7 +140,8 @@ class ArrowRows:
 
     CSV input columns are kept as text for CSV output and parsed to numbers (the
     ``numeric`` ones) for Parquet output; Parquet input columns keep their types.
-    Floats are written in a shortest form that reads back to the same number.
+    Floats are written in a shortest form that reads back to the same number. Each
+    Parquet field with a unit names it in its metadata (``{"unit": "m/s"}``).
 
     Parameters
     ----------
@@ -173,11 +176,12 @@ class ArrowRows:
             if arrow is not None:
                 fields.append(pa.field(name, arrow[name].type))
             elif name in self.numeric and self.fmt == "parquet":
-                fields.append(pa.field(name, pa.float64()))
+                fields.append(pa.field(name, pa.float64(), metadata=unit_metadata(name)))
             else:
                 fields.append(pa.field(name, pa.string()))
         for name, kind in self.kinds.items():
-            fields.append(pa.field(name, getattr(pa, self._TYPES[kind])()))
+            kind_ = getattr(pa, self._TYPES[kind])()
+            fields.append(pa.field(name, kind_, metadata=unit_metadata(name)))
         if self.skip:
             fields.append(pa.field("error", pa.string()))
         return pa.schema(fields)
@@ -223,13 +227,19 @@ def _check_target(target: Path) -> None:
 
 
 @contextlib.contextmanager
-def parquet_columns(path: str | os.PathLike[str]) -> Iterator[Any]:
+def parquet_columns(
+    path: str | os.PathLike[str], metadata: dict[str, str] | None = None
+) -> Iterator[Any]:
     """Stream chunks of named columns to one Parquet file, renamed into place on success.
+
+    Each column with a unit names it in its field metadata (``{"unit": "m/s"}``).
 
     Parameters
     ----------
     path : str or os.PathLike
         The file to write.
+    metadata : dict of str, optional
+        Key-value metadata of the whole file (what the columns' codes mean, the body).
 
     Yields
     ------
@@ -251,21 +261,29 @@ def parquet_columns(path: str | os.PathLike[str]) -> Iterator[Any]:
     with atomic_path(target) as tmp:
         out = ArrowWriter(tmp, "parquet")
         try:
-            yield _TableColumns(out)
+            yield _TableColumns(out, metadata)
         finally:
             out.close()
 
 
 class _TableColumns:
-    def __init__(self, out: ArrowWriter) -> None:
-        self.out = out
+    def __init__(self, out: ArrowWriter, metadata: dict[str, str] | None) -> None:
+        self.out, self.metadata = out, metadata
 
     def write(self, data: dict[str, np.ndarray]) -> None:
-        self.out.write(self.out.pa.table({k: np.ascontiguousarray(v) for k, v in data.items()}))
+        pa = self.out.pa
+        table = pa.table({k: np.ascontiguousarray(v) for k, v in data.items()})
+        fields = [f.with_metadata(unit_metadata(f.name) or {}) for f in table.schema]
+        self.out.write(pa.Table.from_arrays(table.columns, schema=pa.schema(fields, self.metadata)))
 
 
 @contextlib.contextmanager
-def npy_columns(path: str | os.PathLike[str], columns: Sequence[str], size: int) -> Iterator[Any]:
+def npy_columns(
+    path: str | os.PathLike[str],
+    columns: Sequence[str],
+    size: int,
+    dtypes: dict[str, Any] | None = None,
+) -> Iterator[Any]:
     """Stream chunks into one ``.npy`` file per column of a new directory.
 
     The directory is built under a temporary name and renamed into place on
@@ -277,9 +295,12 @@ def npy_columns(path: str | os.PathLike[str], columns: Sequence[str], size: int)
     path : str or os.PathLike
         The directory to create; it must not exist.
     columns : sequence of str
-        Column names; ``regime`` is stored as ``int8`` codes, the others as ``float64``.
+        Column names; by default ``regime`` is stored as ``int8`` codes, the others as
+        ``float64``.
     size : int
         Total number of values per column (written in the headers up front).
+    dtypes : dict, optional
+        Column -> NumPy dtype, for columns stored otherwise (``bool`` flags).
 
     Yields
     ------
@@ -299,7 +320,8 @@ def npy_columns(path: str | os.PathLike[str], columns: Sequence[str], size: int)
     files = _NpyFiles()
     try:
         for c in columns:
-            files.add(tmp / f"{c}.npy", c, np.dtype(np.int8 if c == "regime" else np.float64), size)
+            dtype = (dtypes or {}).get(c, np.int8 if c == "regime" else np.float64)
+            files.add(tmp / f"{c}.npy", c, np.dtype(dtype), size)
         yield files
         files.close()
         umask = current_umask()

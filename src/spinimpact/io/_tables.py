@@ -2,22 +2,34 @@
 
 Each reader is a generator that first yields the header (a list of column names)
 and then one :class:`Chunk` per ``chunk_size`` rows, so memory stays bounded by
-the chunk whatever the file size.
+the chunk whatever the file size. :func:`check_header` and :func:`chunk_numbers`
+are what every kind of batch file (the paper's bodies, planar bodies, pendulums)
+does with them: check the header, and read a column's cells as numbers, naming
+the row, line and column of each bad cell.
 """
 
 from __future__ import annotations
 
 import csv
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from .._validation import require
+from .._validation import require, row_problems
 
-__all__ = ["SUFFIXES", "BatchError", "Chunk", "csv_chunks", "file_format", "parquet_chunks"]
+__all__ = [
+    "SUFFIXES",
+    "BatchError",
+    "Chunk",
+    "check_header",
+    "chunk_numbers",
+    "csv_chunks",
+    "file_format",
+    "parquet_chunks",
+]
 
 #: Accepted file suffixes and their formats.
 SUFFIXES = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
@@ -168,3 +180,104 @@ def parquet_chunks(
         advance(done)
         yield Chunk(first, columns, empty, None, np.full(batch.num_rows, "", dtype=object), arrow)
         first += batch.num_rows
+
+
+def check_header(
+    header: list[str], skip: bool, outputs: Collection[str], required: Sequence[str]
+) -> None:
+    """Raise :class:`BatchError` for a header the run cannot use.
+
+    Parameters
+    ----------
+    header : list of str
+        The input's column names.
+    skip : bool
+        Whether an ``error`` column will be written (so an input may not have one).
+    outputs : collection of str
+        The output columns the run adds: no input column may carry their names.
+    required : sequence of str
+        Columns the input must have.
+
+    Raises
+    ------
+    BatchError
+        For a duplicate column, an input column named as an output column, or a
+        missing required column (the message lists what was found).
+    """
+    seen: set[str] = set()
+    for name in header:
+        if name in seen:
+            raise BatchError(f"duplicate column {name!r} in the header")
+        seen.add(name)
+        if name in outputs or (skip and name == "error"):
+            raise BatchError(f"input column {name!r} has the name of an output column; rename it")
+    missing = [c for c in required if c not in header]
+    if missing:
+        found = ", ".join(repr(h) for h in header[:8])
+        raise BatchError(
+            f"missing column {missing[0]!r}: the input needs columns {', '.join(required)} "
+            f"(found {found}; is the file comma-separated?)"
+        )
+
+
+def chunk_numbers(
+    chunk: Chunk,
+    name: str,
+    default: Any,
+    note: Callable[[int, str], None],
+    problems: Callable[[np.ndarray], np.ndarray] | None = None,
+    required: bool = True,
+) -> np.ndarray:
+    """Column ``name`` of ``chunk`` as float64, each bad cell reported through ``note``.
+
+    Parameters
+    ----------
+    chunk : Chunk
+        The rows.
+    name : str
+        The column (it must be in ``chunk.columns``).
+    default : float or None
+        The value of an empty cell; ``None``: NaN, and (if ``required``) a problem.
+    note : callable
+        Called as ``note(i, message)`` for each problem of row ``i`` of the chunk; the
+        message names the row, its line and the column.
+    problems : callable, optional
+        ``values -> messages`` ('' where a value is good), the rules of the column; by
+        default :func:`~spinimpact._validation.row_problems` of ``name``. Empty cells
+        without a default are not checked by it.
+    required : bool
+        Whether an empty cell without a default is a problem.
+
+    Returns
+    -------
+    numpy.ndarray
+        The numbers (NaN where a cell is empty without default or unreadable).
+    """
+    cells, empty = chunk.columns[name], chunk.empty[name]
+    if cells.dtype.kind in "iuf":
+        values = np.where(empty, np.nan, cells.astype(np.float64))
+    elif cells.dtype.kind == "b":
+        for i in np.flatnonzero(~empty):
+            note(i, f"{chunk.where(i, name)}: a true/false value is not a number")
+        values = np.full(cells.shape, np.nan)
+    else:
+        text = cells.astype(str)
+        values = np.full(text.shape, np.nan)
+        try:
+            values[~empty] = text[~empty].astype(np.float64)
+        except ValueError:
+            for i in np.flatnonzero(~empty):
+                try:
+                    values[i] = float(text[i])
+                except ValueError:
+                    note(i, f"{chunk.where(i, name)}: {str(text[i])!r} is not a number")
+    if default is not None:
+        values[empty] = default
+    elif required:
+        for i in np.flatnonzero(empty):
+            note(i, f"{chunk.where(i, name)}: empty, but {name} is required")
+    found = row_problems(name, values) if problems is None else problems(values)
+    check = (found != "") & ~(empty & np.isnan(values))
+    for i in np.flatnonzero(check):
+        note(i, f"{chunk.where(i, name)}: {found[i]}")
+    return values

@@ -1,5 +1,10 @@
 """Batch files: solve every row of a CSV (or Parquet) file of incidences, in chunks.
 
+This module solves the paper's bodies; a file whose columns describe planar bodies
+(``rx, ry``) or pendulums (``gx, gy, px, py``) is solved as
+:mod:`spinimpact.io.planar_batch` describes (:func:`run_batch` reads the header and
+:func:`body_kind` decides).
+
 Columns ``vx, vy, omega`` are required; ``mu, kappa, mass, radius, gyration,
 body`` are optional per row (an empty cell, a Parquet null or a missing column
 takes the default; a row gives either a ``body`` preset or a ``gyration``). The
@@ -22,12 +27,22 @@ from typing import Any
 
 import numpy as np
 
-from .._validation import available, require, row_problems
+from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import Impact, solve
 from ._sinks import ArrowRows, CsvRows
-from ._tables import SUFFIXES, BatchError, Chunk, csv_chunks, file_format, parquet_chunks
+from ._tables import (
+    SUFFIXES,
+    BatchError,
+    Chunk,
+    check_header,
+    chunk_numbers,
+    csv_chunks,
+    file_format,
+    parquet_chunks,
+)
 from .atomic import atomic_path
+from .planar_batch import PlanarBatch, body_kind
 
 __all__ = [
     "RESULT_COLUMNS",
@@ -36,6 +51,8 @@ __all__ = [
     "SUFFIXES",
     "BatchError",
     "BatchSummary",
+    "body_kind",
+    "input_kind",
     "result_columns",
     "run_batch",
 ]
@@ -110,38 +127,7 @@ class BatchSummary:
     rows: int  #: data rows read
     skipped: int  #: rows written with an error instead of results (``on_error="skip"``)
     output: Path  #: the file written
-
-
-def _numbers(chunk: Chunk, name: str, default: Any, note: Callable[[int, str], None]) -> np.ndarray:
-    """Column ``name`` as float64; empty cells take ``default`` (NaN if None)."""
-    cells, empty = chunk.columns[name], chunk.empty[name]
-    if cells.dtype.kind in "iuf":
-        values = np.where(empty, np.nan, cells.astype(np.float64))
-    elif cells.dtype.kind == "b":
-        for i in np.flatnonzero(~empty):
-            note(i, f"{chunk.where(i, name)}: a true/false value is not a number")
-        values = np.full(cells.shape, np.nan)
-    else:
-        text = cells.astype(str)
-        values = np.full(text.shape, np.nan)
-        try:
-            values[~empty] = text[~empty].astype(np.float64)
-        except ValueError:
-            for i in np.flatnonzero(~empty):
-                try:
-                    values[i] = float(text[i])
-                except ValueError:
-                    note(i, f"{chunk.where(i, name)}: {str(text[i])!r} is not a number")
-    if default is not None:
-        values[empty] = default
-    elif name != "gyration":  # an empty gyration means "use the row's body"
-        for i in np.flatnonzero(empty):
-            note(i, f"{chunk.where(i, name)}: empty, but {name} is required")
-    problems = row_problems(name, values)
-    check = (problems != "") & ~(empty & np.isnan(values))
-    for i in np.flatnonzero(check):
-        note(i, f"{chunk.where(i, name)}: {problems[i]}")
-    return values
+    kind: str = "paper"  #: what the file described: "paper", "planar" or "pendulum"
 
 
 def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
@@ -156,7 +142,8 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
     values = {}
     for name in NUMERIC:
         if name in chunk.columns:
-            values[name] = _numbers(chunk, name, defaults.get(name), note)
+            default = defaults.get(name)
+            values[name] = chunk_numbers(chunk, name, default, note, required=name != "gyration")
         else:
             default = defaults.get(name)
             values[name] = np.full(n, np.nan if default is None else float(default))
@@ -212,21 +199,42 @@ def _have_pyarrow() -> bool:
     return available("pyarrow")
 
 
-def _check_header(header: list[str], skip: bool) -> None:
-    seen: set[str] = set()
-    for name in header:
-        if name in seen:
-            raise BatchError(f"duplicate column {name!r} in the header")
-        seen.add(name)
-        if name in RESULT_COLUMNS or (skip and name == "error"):
-            raise BatchError(f"input column {name!r} has the name of an output column; rename it")
-    missing = [c for c in REQUIRED if c not in header]
-    if missing:
-        found = ", ".join(repr(h) for h in header[:8])
-        raise BatchError(
-            f"missing column {missing[0]!r}: the input needs columns vx, vy, omega "
-            f"(found {found}; is the file comma-separated?)"
-        )
+def _input_format(source: Path) -> str:
+    if not source.is_file():
+        raise ValueError(f"input file {str(source)!r} does not exist or is not a file")
+    return file_format(source, "input")
+
+
+def input_kind(source: str | os.PathLike[str]) -> str:
+    """What the file ``source`` describes, read from its header alone (:func:`body_kind`).
+
+    Parameters
+    ----------
+    source : str or os.PathLike
+        A ``.csv``, ``.parquet`` or ``.pq`` batch input.
+
+    Returns
+    -------
+    str
+        ``"paper"`` (the paper's bodies), ``"planar"`` (columns ``rx, ry``) or
+        ``"pendulum"`` (columns ``gx, gy, px, py``).
+
+    Raises
+    ------
+    BatchError
+        For an empty file or a header that mixes kinds (see :func:`body_kind`).
+    ValueError
+        For a missing input or an unknown suffix.
+    ImportError
+        For Parquet without pyarrow, naming the ``[parquet]`` extra.
+    """
+    source = Path(source)
+    read = parquet_chunks if _input_format(source) == "parquet" else csv_chunks
+    chunks = read(source, 1, True, lambda done: None)
+    try:
+        return body_kind(next(chunks))
+    finally:
+        chunks.close()
 
 
 def run_batch(
@@ -240,19 +248,29 @@ def run_batch(
 ) -> BatchSummary:
     """Solve every row of ``source`` and write ``output`` (CSV, or Parquet by suffix).
 
+    The header decides the solver (:func:`body_kind`): columns ``rx, ry`` make a file
+    of free planar bodies and ``gx, gy, px, py`` one of pendulums, solved as
+    :mod:`spinimpact.io.planar_batch` describes; otherwise the rows are the paper's
+    bodies, solved by :func:`~spinimpact.solve`.
+
     Parameters
     ----------
     source : str or os.PathLike
         Input file, ``.csv``, ``.parquet`` or ``.pq``, with columns ``vx, vy``
         (m/s) and ``omega`` (rad/s), and optionally ``mu, kappa`` (1), ``mass``
-        (kg), ``radius, gyration`` (m) and ``body`` (a preset name).
+        (kg), ``radius, gyration`` (m) and ``body`` (a preset name). Planar bodies:
+        ``mass, inertia, rx, ry, vx, vy, omega``; pendulums: ``mass, inertia, gx, gy,
+        px, py, omega``; both optionally ``mu, kappa, law``.
     output : str or os.PathLike
         Output file, ``.csv``, ``.parquet`` or ``.pq``: the input columns, then
-        :data:`RESULT_COLUMNS` (SI units, as the :class:`~spinimpact.Impact` fields).
+        :data:`RESULT_COLUMNS` (SI units, as the :class:`~spinimpact.Impact` fields), or
+        for planar files :attr:`PlanarBatch.kinds <spinimpact.io.planar_batch.PlanarBatch>`'s
+        columns. Parquet fields name their units in their metadata.
     defaults : dict
         Values for the optional columns where a file lacks them: ``mu``,
         ``kappa``, ``mass``, ``radius`` and either ``body`` (a preset name) or
-        ``gyration``.
+        ``gyration``; for planar files ``mu``, ``kappa`` and ``law`` (``"newton"``,
+        ``"poisson"``, the default, or ``"energetic"``).
     on_error : {"stop", "skip"}
         ``"stop"`` raises :class:`BatchError` naming the first bad row (and its
         line and column) and writes nothing. ``"skip"`` writes bad rows with an
@@ -296,9 +314,7 @@ def run_batch(
         raise TypeError(f"chunk_size must be a positive integer, got {chunk_size!r}")
     if chunk_size < 1:
         raise ValueError(f"chunk_size must be a positive integer, got {chunk_size!r}")
-    if not source.is_file():
-        raise ValueError(f"input file {str(source)!r} does not exist or is not a file")
-    fmt_in, fmt_out = file_format(source, "input"), file_format(output, "output")
+    fmt_in, fmt_out = _input_format(source), file_format(output, "output")
     if output.exists() and output.resolve() == source.resolve():
         raise ValueError("the output file must differ from the input file")
     if "parquet" in (fmt_in, fmt_out):
@@ -315,17 +331,23 @@ def run_batch(
     read = parquet_chunks if fmt_in == "parquet" else csv_chunks
     chunks = read(source, int(chunk_size), skip, advance)
     header = next(chunks)
-    _check_header(header, skip)
+    kind = body_kind(header)
+    if kind == "paper":
+        check_header(header, skip, RESULT_COLUMNS, REQUIRED)
+        kinds, numeric = column_kinds(), NUMERIC
+        solve_chunk = functools.partial(_solve_chunk, defaults=defaults)
+    else:
+        plan = PlanarBatch(kind, header, skip, defaults)
+        kinds, numeric, solve_chunk = plan.kinds, plan.numeric, plan.solve
     rows = skipped = 0
-    kinds = column_kinds()
     with atomic_path(output) as tmp:
         if fmt_out == "parquet" or _have_pyarrow():
-            sink: ArrowRows | CsvRows = ArrowRows(tmp, header, kinds, skip, fmt_out, NUMERIC)
+            sink: ArrowRows | CsvRows = ArrowRows(tmp, header, kinds, skip, fmt_out, numeric)
         else:
             sink = CsvRows(tmp, header, kinds, skip)
         try:
             for chunk in chunks:
-                values, results, messages = _solve_chunk(chunk, defaults)
+                values, results, messages = solve_chunk(chunk)
                 bad = messages != ""
                 if bad.any() and not skip:
                     raise BatchError(messages[int(np.argmax(bad))])
@@ -334,4 +356,4 @@ def run_batch(
                 skipped += int(bad.sum())
         finally:
             sink.close()
-    return BatchSummary(rows=rows, skipped=skipped, output=output)
+    return BatchSummary(rows=rows, skipped=skipped, output=output, kind=kind)

@@ -16,23 +16,31 @@ names stay accepted (:data:`ALIASES`).
 
 Random samples are drawn per chunk from ``numpy.random.default_rng([seed,
 chunk])``, so a sweep is reproducible for a given seed and chunk size.
+
+A planar body or a pendulum is swept by
+:class:`~spinimpact.io.planar_sweep.PlanarSweep`, a :class:`Sweep` with its own
+inputs, fields and regimes (:attr:`Sweep.inputs`, :meth:`Sweep.field_name`,
+:attr:`Sweep.regimes`), run by the same :func:`run_sweep`. A Parquet output names
+the regimes its codes stand for and the body in its metadata, and each column's unit.
 """
 
 from __future__ import annotations
 
+import json
 import math
 import os
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from .. import core
-from .._validation import require, validated, whole
+from .._validation import validated, whole
 from ..model.body import Body
 from ._axes import INPUTS, Axis, parse_axis
 from ._fields import ALIASES, FIELDS, REBOUND_FIELDS, field_name, rebound_fields
+from ._runner import Discard, chunks_in_order, dask_client
 from ._sinks import npy_columns, parquet_columns
 
 __all__ = [
@@ -101,7 +109,17 @@ class Sweep:
             raise TypeError(f"body must be a spinimpact.Body, got {type(b).__name__}")
         if any(np.ndim(x) for x in (b.mass, b.radius, b.gyration)):
             raise ValueError("a sweep needs a single body, not an array of bodies")
-        missing = [n for n in INPUTS if n not in self.axes]
+        self._check_axes()
+        for a in self.axes.values():  # every value an axis can take obeys the input rules
+            ends = [a.lo] if a.kind == "fixed" else [a.lo, a.hi]
+            for x in ends:
+                validated(a.name, x)
+        body = {name: float(getattr(b, name)) for name in ("mass", "radius", "zeta", "inertia")}
+        object.__setattr__(self, "_body", body)
+
+    def _check_axes(self) -> None:
+        """An axis for each input; a grid or random samples, not both; the counts."""
+        missing = [n for n in self.inputs if n not in self.axes]
         if missing:
             raise ValueError(f"the sweep needs a value or range for {', '.join(missing)}")
         kinds = {a.kind for a in self.axes.values()}
@@ -114,12 +132,24 @@ class Sweep:
         elif self.samples is not None:
             raise ValueError("samples is for random (uniform) axes only")
         _positive_int("chunk_size", self.chunk_size)
-        for a in self.axes.values():  # every value an axis can take obeys the input rules
-            ends = [a.lo] if a.kind == "fixed" else [a.lo, a.hi]
-            for x in ends:
-                validated(a.name, x)
-        body = {name: float(getattr(b, name)) for name in ("mass", "radius", "zeta", "inertia")}
-        object.__setattr__(self, "_body", body)
+
+    #: The inputs it varies, in the order of the points and of the random draws.
+    inputs = INPUTS
+    #: Regime names; the ``regime`` field holds indices into them.
+    regimes = core.REGIMES
+
+    def field_name(self, name: str, role: str = "fields") -> str:
+        """The field ``name`` stands for (:func:`~spinimpact.io._fields.field_name`)."""
+        return field_name(name, role)
+
+    def column_dtype(self, name: str) -> np.dtype:
+        """How column ``name`` is stored in ``.npy`` files: ``int8`` regime codes, else float."""
+        return np.dtype(np.int8 if name == "regime" else np.float64)
+
+    def metadata(self) -> dict[str, str]:
+        """What a Parquet file of the sweep says about itself: regime names and the body."""
+        body = json.dumps(self.body.to_dict())
+        return {"regimes": json.dumps(list(self.regimes)), "body": body}
 
     @property
     def random(self) -> bool:
@@ -149,17 +179,17 @@ class Sweep:
         if self.random:
             rng = np.random.default_rng([self.seed, k])
             out: dict[str, Any] = {}
-            for name in INPUTS:  # a fixed order: the draws do not depend on dict order
+            for name in self.inputs:  # a fixed order: the draws do not depend on dict order
                 a = self.axes[name]
                 out[name] = rng.uniform(a.lo, a.hi, n) if a.kind == "uniform" else a.lo
             return out
-        shape = tuple(self.axes[name].num for name in INPUTS)
+        shape = tuple(self.axes[name].num for name in self.inputs)
         index = np.unravel_index(np.arange(start, start + n), shape)
         return {
             name: self.axes[name].values()[i]
             if self.axes[name].kind == "grid"
             else self.axes[name].lo
-            for name, i in zip(INPUTS, index, strict=True)
+            for name, i in zip(self.inputs, index, strict=True)
         }
 
     def chunk_length(self, k: int) -> int:
@@ -205,13 +235,14 @@ class SweepResult:
     regime_counts: np.ndarray = field(default_factory=lambda: np.zeros(len(core.REGIMES), np.int64))
     histogram: np.ndarray | None = None  #: counts per bin, if a histogram was asked for
     bin_edges: np.ndarray | None = None  #: the histogram's ``bins + 1`` edges
+    regimes: tuple[str, ...] = core.REGIMES  #: the regimes' names (a planar sweep has more)
 
     @property
     def regime_fractions(self) -> dict[str, float]:
         """Share of the points in each regime, by name."""
         total = max(self.points, 1)
         return {
-            name: int(c) / total for name, c in zip(core.REGIMES, self.regime_counts, strict=True)
+            name: int(c) / total for name, c in zip(self.regimes, self.regime_counts, strict=True)
         }
 
 
@@ -226,55 +257,14 @@ class _Work:
     def __call__(self, k: int) -> tuple[int, np.ndarray, np.ndarray | None, dict]:
         hist_field = (self.histogram[0],) if self.histogram else ()
         names = dict.fromkeys(("regime", *self.columns, *hist_field))
-        data = self.sweep.evaluate(k, tuple(n for n in names if n not in INPUTS))
-        counts = np.bincount(data["regime"], minlength=len(core.REGIMES))
+        data = self.sweep.evaluate(k, tuple(n for n in names if n not in self.sweep.inputs))
+        counts = np.bincount(data["regime"], minlength=len(self.sweep.regimes))
         hist = None
         if self.histogram:
             name, lo, hi, bins = self.histogram
-            hist, _ = np.histogram(data[name], bins=int(bins), range=(lo, hi))
+            values = np.asarray(data[name], np.float64)  # flags count as 0 and 1
+            hist, _ = np.histogram(values, bins=int(bins), range=(lo, hi))
         return data["regime"].size, counts, hist, {c: data[c] for c in self.columns}
-
-
-def _chunks_in_order(
-    sweep: Sweep, work: Callable[[int], Any], client: Any, window: int
-) -> Iterator:
-    """Results of ``work(k)`` for every chunk, in order, locally or on a Dask client
-    with at most ``window`` chunks in flight (bounded memory)."""
-    if client is None:
-        for k in range(sweep.chunks):
-            yield work(k)
-        return
-    pending: dict[int, Any] = {}
-    for k in range(sweep.chunks):
-        pending[k] = client.submit(work, k, pure=False)
-        if len(pending) >= window:
-            first = min(pending)
-            yield pending.pop(first).result()
-    for k in sorted(pending):
-        yield pending.pop(k).result()
-
-
-def dask_client(address: str, *, timeout: float = 30) -> Any:
-    """Connect to the Dask scheduler at ``address``, for ``run_sweep(..., client=...)``.
-
-    Parameters
-    ----------
-    address : str
-        The scheduler's address, e.g. ``"tcp://10.0.0.5:8786"``.
-    timeout : float
-        Seconds to wait for the connection.
-
-    Returns
-    -------
-    distributed.Client
-
-    Raises
-    ------
-    ImportError
-        Without ``distributed``, naming the ``[dask]`` extra.
-    """
-    distributed = require("distributed", "sweeps on a Dask cluster")
-    return distributed.Client(address, timeout=timeout)
 
 
 def run_sweep(
@@ -329,29 +319,32 @@ def run_sweep(
     (5, [0, 5, 0, 0])
     """
     for name in fields:
-        field_name(name)
+        sweep.field_name(name)
     if histogram is not None:
         name, lo, hi, bins = histogram
-        field_name(name, "histogram field")
+        sweep.field_name(name, "histogram field")
         if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
             raise ValueError(
                 f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
             )
-    result = SweepResult()
+    regimes = tuple(sweep.regimes)
+    result = SweepResult(regime_counts=np.zeros(len(regimes), np.int64), regimes=regimes)
     if histogram is not None:
         result.histogram = np.zeros(int(histogram[3]), np.int64)
         result.bin_edges = np.linspace(histogram[1], histogram[2], int(histogram[3]) + 1)
     window = 4 if client is None else 2 * max(1, len(getattr(client, "nthreads", lambda: {1: 1})()))
-    columns = tuple(dict.fromkeys(INPUTS + tuple(fields))) if output is not None else ()
+    columns = tuple(dict.fromkeys(sweep.inputs + tuple(fields))) if output is not None else ()
     work = _Work(sweep, columns, histogram)
     if output is None:
-        sink: Any = _Discard()
+        sink: Any = Discard()
     elif str(output).endswith(".parquet"):
-        sink = parquet_columns(output)
+        sink = parquet_columns(output, sweep.metadata())
     else:
-        sink = npy_columns(output, columns, sweep.size)
+        dtypes = {c: sweep.column_dtype(c) for c in columns}
+        sink = npy_columns(output, columns, sweep.size, dtypes)
     with sink as writer:
-        for k, (n, counts, hist, data) in enumerate(_chunks_in_order(sweep, work, client, window)):
+        chunks = chunks_in_order(sweep.chunks, work, client, window)
+        for k, (n, counts, hist, data) in enumerate(chunks):
             writer.write(data)
             result.points += n
             result.regime_counts += counts
@@ -360,16 +353,3 @@ def run_sweep(
             if progress is not None:
                 progress(k + 1, sweep.chunks)
     return result
-
-
-class _Discard:
-    """The sink of a sweep without output: reductions only."""
-
-    def __enter__(self) -> _Discard:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        return None
-
-    def write(self, data: dict) -> None:
-        pass
