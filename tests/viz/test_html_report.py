@@ -1,7 +1,6 @@
 """The self-contained HTML report: content, and what a real browser shows."""
 
 import re
-import shutil
 import subprocess
 import sys
 
@@ -10,6 +9,8 @@ import pytest
 
 from spinimpact import Body, solve, solve_particle
 from spinimpact.viz.html import _num, impact_report_html
+
+from tests.viz.browser import chromium, needs_browser
 
 pytest.importorskip("matplotlib")
 
@@ -88,32 +89,10 @@ def test_report_bad_output_name(tmp_path):
     assert not list(tmp_path.iterdir())
 
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-needs_browser = pytest.mark.skipif(
-    CHROMIUM is None, reason="no chromium installed (.ci/run installs Debian's chromium)"
-)
-
-
-def _chromium(tmp_path, *args):
-    flags = [
-        "--headless",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--disable-quic",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        "--hide-scrollbars",
-        f"--user-data-dir={tmp_path / 'profile'}",
-    ]
-    return subprocess.run([CHROMIUM, *flags, *args], capture_output=True, text=True, timeout=120)
-
-
 @needs_browser
 def test_browser_shows_the_report(page, tmp_path):
     path, _, imp = page
-    out = _chromium(tmp_path, "--virtual-time-budget=5000", "--dump-dom", path.as_uri())
+    out = chromium(tmp_path, "--virtual-time-budget=5000", "--dump-dom", path.as_uri())
     assert out.returncode == 0, out.stderr[-2000:]
     dom = out.stdout
     # the page's own load handler counted the figures the browser decoded
@@ -127,7 +106,7 @@ def test_browser_screenshot(page, tmp_path):
 
     path, _, _ = page
     shot = tmp_path / "shot.png"
-    out = _chromium(tmp_path, "--window-size=1200,2400", f"--screenshot={shot}", path.as_uri())
+    out = chromium(tmp_path, "--window-size=1200,2400", f"--screenshot={shot}", path.as_uri())
     assert out.returncode == 0, out.stderr[-2000:]
     pixels = imread(shot)
     assert pixels.shape[:2] == (2400, 1200)

@@ -5,8 +5,6 @@ whole (every figure decoded, nothing wider than the window)."""
 import io
 import math
 import re
-import shutil
-import subprocess
 from html.parser import HTMLParser
 
 import numpy as np
@@ -19,6 +17,8 @@ from spinimpact.viz import planar_html
 from spinimpact.viz.planar_html import planar_report_html, typeset_table
 from spinimpact.viz.report import planar_tables, print_planar_report
 from spinimpact.viz.tables import number
+
+from tests.viz.browser import chromium, needs_browser
 
 pytest.importorskip("matplotlib")
 
@@ -206,28 +206,6 @@ def test_api_rejects_what_is_not_one_planar_impact():
         planar_report_html(paper)  # the paper's bodies have impact_report_html
 
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-needs_browser = pytest.mark.skipif(
-    CHROMIUM is None, reason="no chromium installed (.ci/run installs Debian's chromium)"
-)
-
-
-def _chromium(tmp_path, *args):
-    flags = [
-        "--headless",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--disable-quic",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-        "--hide-scrollbars",
-        f"--user-data-dir={tmp_path / 'profile'}",
-    ]
-    return subprocess.run([CHROMIUM, *flags, *args], capture_output=True, text=True, timeout=120)
-
-
 @pytest.fixture(scope="module")
 def page_file(tmp_path_factory):
     path = tmp_path_factory.mktemp("planar") / "planar.html"
@@ -240,7 +218,7 @@ def page_file(tmp_path_factory):
 @pytest.mark.parametrize("width", [1200, 800])
 def test_browser_shows_everything_within_the_window(page_file, tmp_path, width):
     path, imp = page_file
-    out = _chromium(
+    out = chromium(
         tmp_path,
         f"--window-size={width},2000",
         "--virtual-time-budget=5000",
@@ -262,7 +240,7 @@ def test_browser_screenshot(page_file, tmp_path):
 
     path, _ = page_file
     shot = tmp_path / "shot.png"
-    out = _chromium(tmp_path, "--window-size=1200,3600", f"--screenshot={shot}", path.as_uri())
+    out = chromium(tmp_path, "--window-size=1200,3600", f"--screenshot={shot}", path.as_uri())
     assert out.returncode == 0, out.stderr[-2000:]
     pixels = imread(shot)
     assert pixels.shape[:2] == (3600, 1200)
