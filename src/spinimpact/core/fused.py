@@ -9,6 +9,12 @@ They perform the same IEEE operations in the same order as the NumPy kernels
 (no fast-math, no fused multiply-add), so the results are identical bit for
 bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba,
 :func:`rebound` falls back to the NumPy path.
+
+The compiled kernels are cached on disk (Numba's ``cache=True``) where Numba finds a
+writable place (``__pycache__`` beside this file, the user's cache folder under
+``HOME``, or ``NUMBA_CACHE_DIR``); where it finds none (a read-only installation and a
+read-only ``HOME``) they are compiled in memory on first use instead
+(``tests/io/test_sweep_numba_cache.py``).
 """
 
 from __future__ import annotations
@@ -31,12 +37,28 @@ except ImportError as err:  # pragma: no cover
     _NUMBA_ERROR = err
 
 
+def _njit(function):
+    """``numba.njit`` with an on-disk cache, or without one where none can be written.
+
+    Numba looks for a cache folder when the function is decorated, at import, and raises
+    ``RuntimeError("cannot cache function ...: no locator available ...")`` if no
+    candidate is writable; the kernels then compile in memory on their first call.
+    """
+    options = {"parallel": True, "fastmath": False, "error_model": "numpy"}
+    try:
+        return numba.njit(cache=True, **options)(function)
+    except RuntimeError as err:  # pragma: no cover - depends on the file system
+        if "no locator available" not in str(err):
+            raise
+        return numba.njit(cache=False, **options)(function)
+
+
 if HAVE_NUMBA:
     # Both kernels are branch-free (both forms of f1 computed, then selected) so
     # that LLVM vectorizes them; each line mirrors an expression of
     # kinematics.tangential_impulse / rebound exactly, in the same order.
 
-    @numba.njit(parallel=True, cache=True, fastmath=False, error_model="numpy")
+    @_njit
     def _rebound_scalar(vx, vy, omega, m, r, z, f_mu, k, out_vx, out_vy, out_om):
         c = (1.0 + k) * z * f_mu  # sticks: |u| <= (1 + kappa) zeta mu |vy| (eq. 4.6)
         zm1 = z - 1.0
@@ -51,7 +73,7 @@ if HAVE_NUMBA:
             out_vy[i] = -k * v + 0.0  # eq. 3.4
             out_om[i] = omega[i] + zm1 * f1 / mr  # eq. 2.3
 
-    @numba.njit(parallel=True, cache=True, fastmath=False, error_model="numpy")
+    @_njit
     def _rebound_arrays(vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om):
         for i in numba.prange(out_vx.size):
             m, r, z, f_mu, k, v = mass[i], radius[i], zeta[i], mu[i], kappa[i], vy[i]
