@@ -16,6 +16,7 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 
 from .model.body import Body
 from .model.impact import History, Impact, Outcome, State, solve
+from .model.pair import PairImpact, solve_pair
 from .model.particle import ParticleImpact, solve_particle
 from .model.planar import (
     PendulumImpact,
@@ -26,10 +27,18 @@ from .model.planar import (
 )
 from .model.planar_body import Pendulum, PlanarBody
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
+from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "solve_pair",
+    "PairImpact",
+    "solve_sphere",
+    "Vector",
+    "Surface",
+    "State3",
+    "SphereImpact",
     "Body",
     "ConstantRestitution",
     "History",

@@ -27,6 +27,7 @@ __all__ = [
     "as_real_array",
     "scalar",
     "whole",
+    "vector3",
     "require",
     "available",
     "broadcast",
@@ -60,6 +61,34 @@ def _value(arr: np.ndarray, mask: np.ndarray) -> str:
     return repr(float(arr[mask].flat[0] if arr.ndim else arr[()]))
 
 
+def _holds_masked_array(value: object) -> bool:
+    """Whether ``value`` is a masked array or a (nested) list or tuple holding one;
+    level by level, so a long list of plain numbers costs one pass over their types."""
+    level = [value]
+    while level:
+        kinds = set(map(type, level))
+        if any(issubclass(k, np.ma.MaskedArray) for k in kinds):
+            return True
+        if not any(issubclass(k, list | tuple) for k in kinds):
+            return False
+        level = [x for seq in level if isinstance(seq, list | tuple) for x in seq]
+    return False
+
+
+def _masked_index(value: object) -> tuple[int, ...] | None:
+    """The first index of ``value`` (a masked array, or a list or tuple holding one)
+    hidden behind a mask (``()`` for a masked scalar), or ``None``."""
+    if isinstance(value, np.ma.MaskedArray):
+        hidden = np.ma.getmaskarray(value)
+        return tuple(int(i) for i in np.argwhere(hidden)[0]) if hidden.any() else None
+    if isinstance(value, list | tuple):
+        for i, item in enumerate(value):
+            inner = _masked_index(item)
+            if inner is not None:
+                return (i, *inner)
+    return None
+
+
 def as_real_array(name: str, value: object) -> np.ndarray:
     """Convert ``value`` to a finite float64 array.
 
@@ -76,8 +105,18 @@ def as_real_array(name: str, value: object) -> np.ndarray:
         If ``value`` is not a real number or an array of them (a string, ``None``,
         a bool, a complex number, a ragged sequence).
     ValueError
-        If an element is not finite or exceeds :data:`LARGEST` in magnitude.
+        If an element is not finite or exceeds :data:`LARGEST` in magnitude, or is
+        masked: NumPy would silently compute with the value under a masked array's
+        mask, so a masked element is refused (a masked array with nothing masked is
+        its data).
     """
+    where = _masked_index(value) if _holds_masked_array(value) else None
+    if where is not None:
+        at = f" (first masked index {where[0] if len(where) == 1 else where})" if where else ""
+        raise ValueError(
+            f"{name} must not have masked (missing) elements{at}: fill them "
+            f"(.filled(value)) or drop them (.compressed()) first"
+        )
     try:
         raw = np.asarray(value)
     except (ValueError, TypeError):  # ragged nested sequences
@@ -131,7 +170,13 @@ RULES: dict[str, list[tuple[Callable[[np.ndarray], np.ndarray], str]]] = {
     "kappa": [(lambda k: (k >= 0) & (k <= 1), "in [0, 1]")],
     "mass": _POSITIVE,
     "radius": _POSITIVE,
-    "gyration": _POSITIVE,
+    # A body's gyration may be its radius over sqrt(MAX_ZETA) (R/rho up to 1e10), so the
+    # smallest accepted radius, SMALLEST, allows rho down to SMALLEST/1e10; J = m rho^2
+    # then stays above 1e-170, far from underflow.
+    "gyration": [
+        (lambda a: a > 0, "> 0"),
+        (lambda a: a >= SMALLEST / math.sqrt(MAX_ZETA), f">= {SMALLEST / math.sqrt(MAX_ZETA):g}"),
+    ],
 }
 
 
@@ -178,6 +223,21 @@ def scalar(name: str, value: object, rules_for: str | None = None, *, why: str =
         raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}"
                          f"{reason}")  # fmt: skip
     return float(arr)
+
+
+def vector3(name: str, value: object) -> np.ndarray:
+    """A finite real 3-vector or an array of them (last axis of length 3), read-only.
+
+    ``TypeError`` for what is not numbers (:func:`as_real_array`), ``ValueError`` naming
+    ``name`` for a last axis that is not of length 3 or a non-finite component.
+    """
+    arr = as_real_array(name, value)
+    if arr.ndim == 0 or arr.shape[-1] != 3:
+        raise ValueError(
+            f"{name} must be a 3-vector (x, y, z) or an array of them along the last axis, "
+            f"got shape {arr.shape}"
+        )
+    return arr
 
 
 def whole(name: str, value: object, low: int | None = None) -> int:

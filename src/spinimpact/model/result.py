@@ -69,6 +69,9 @@ class Result:
         ``True`` (default): a nested result's columns are prefixed with the
         field's name (``after_vx``); ``False``: they keep their own names
         (the outcome flags ``backward``, ``rolling``, ...).
+    ``_body_prefix``
+        ``True``: a body's columns are prefixed with the field's name (two balls:
+        ``ball1_mass``, ``ball2_mass``); ``False`` (default): they keep their names.
     ``_per_impact``
         Whether each array field holds one value per impact, so that
         ``result[i]`` may index every array field. Results of one impact over
@@ -91,6 +94,7 @@ class Result:
     _shape_field: ClassVar[str | None] = None
     _column_prefix: ClassVar[bool] = True
     _per_impact: ClassVar[bool] = True
+    _body_prefix: ClassVar[bool] = False  #: prefix a body's columns with its field's name
 
     # -- the impacts ---------------------------------------------------------------
     @property
@@ -183,7 +187,8 @@ class Result:
             elif _is_array(v):
                 out[name] = np.broadcast_to(np.asarray(v), shape)
             elif hasattr(v, "columns"):
-                out.update(v.columns(shape))
+                prefix = f"{name}_" if self._body_prefix else ""
+                out.update({prefix + k: c for k, c in v.columns(shape).items()})
         return out
 
     @classmethod
@@ -213,7 +218,8 @@ class Result:
                 prefix = f"{f.name}_" if kind._column_prefix else ""
                 names += [prefix + n for n in kind.column_names()]
             elif isinstance(kind, type) and hasattr(kind, "COLUMNS"):
-                names += list(kind.COLUMNS)
+                prefix = f"{f.name}_" if cls._body_prefix else ""
+                names += [prefix + n for n in kind.COLUMNS]
             elif kind is Array or kind is np.ndarray:
                 names.append(f.name)
         return tuple(names)
