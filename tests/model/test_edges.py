@@ -61,7 +61,7 @@ def test_extreme_or_odd_inputs_are_rejected_by_name(kwargs, error, message):
 @pytest.mark.parametrize(
     ("kwargs", "message"),
     [
-        (dict(mass=1.0, radius=1.0, gyration=1e-200), "gyration must be >= 1e-50"),
+        (dict(mass=1.0, radius=1.0, gyration=1e-200), "gyration must be >= 1e-60"),
         (dict(mass=1e300, radius=1.0, gyration=1.0), "mass must be at most 1e"),
         (dict(mass=1.0, radius=1e-9, gyration=1.0), "zeta = 1 \\+ \\(radius/gyration\\)"),
     ],

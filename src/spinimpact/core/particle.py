@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
-from ._xp import arrays, result
+from ._xp import arrays, quiet, result
 
 __all__ = [
     "ParticleRebound",
@@ -149,7 +149,8 @@ def particle_energy_threshold(mu, kappa):
     -------
     ratio : float or array
         Dimensionless: the tangent of the incidence angle from the normal. ``-inf`` where
-        ``mu = 0`` (no friction, no energy created).
+        ``mu = 0`` (no friction, no energy created), and where the value lies below the
+        float range (``kappa < 1`` with ``mu`` below about ``(1 - kappa) 1e-308``).
 
     Notes
     -----
@@ -177,5 +178,6 @@ def particle_energy_threshold(mu, kappa):
     """
     xp, (mu, kappa) = arrays(mu, kappa)
     safe = xp.where(mu > 0, mu, 1.0)
-    value = ((1.0 + kappa) * mu * mu + kappa - 1.0) / (2.0 * safe)
+    with quiet(xp, over="ignore"):  # below the float range (mu < ~1e-308): -inf, as at mu = 0
+        value = ((1.0 + kappa) * mu * mu + kappa - 1.0) / (2.0 * safe)
     return result(xp, xp.where(mu > 0, value, -xp.inf))
