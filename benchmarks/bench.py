@@ -64,6 +64,31 @@ def engine_comparison() -> list[tuple[str, float, str, dict]]:
     return rows
 
 
+def late_phase_rows() -> list[tuple[str, int, int, float]]:
+    """PyBullet's exact-contact settings on the standard cases moved late in the step.
+
+    The standard cases at 10 contact phases from 0.99 to 0.999 of a time step, with
+    Bullet's contact slop at its default (1e-5 m) and at 0: rows (label, bounces not
+    exact to 1e-12, bounces, largest error). See docs/performance.md, "PyBullet late
+    in a time step".
+    """
+    from spinimpact import engines
+
+    if not engines.available("pybullet"):
+        return []
+    cases = engines.standard_cases(phases=10)
+    cases["phase"] = 0.99 + 0.01 * (cases["phase"] - 0.05)  # 0.99, 0.991, ..., 0.999
+    exact = next(s for label, _, s in engines.CONFIGURATIONS if "exact-contact" in label)
+    body = Body.solid_sphere(mass=1.0, radius=0.1)
+    rows = []
+    for hz in (240.0, 1000.0):
+        for slop in (1e-5, 0.0):
+            run = engines.bounce("pybullet", body, **cases, hz=hz, contact_slop=slop, **exact)
+            label = f"PyBullet, {hz:.0f} Hz, exact-contact settings, contact_slop={slop:g}"
+            rows.append((label, int((run.error > 1e-12).sum()), run.error.size, run.error.max()))
+    return rows
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--n", type=int, default=10_000_000, help="impacts in the batch")
@@ -206,6 +231,18 @@ def main() -> None:
             "engine cases: spinimpact.engines.standard_cases(), 144 impacts of a solid "
             "sphere x 8 contact phases"
         )
+    late = late_phase_rows()
+    if late:
+        phases = Table(
+            title="PyBullet late in a time step: the standard cases at 10 contact phases "
+            "from 0.99 to 0.999"
+        )
+        phases.add_column("engine")
+        phases.add_column("not exact (error > 1e-12)", justify="right")
+        phases.add_column("largest error", justify="right")
+        for name, off, total, worst in late:
+            phases.add_row(name, f"{off} of {total}", f"{worst:.2g}")
+        console.print(phases)
     console.print(
         f"copy bound: {copy_kind}, {moved / t_copy / 1e9:.1f} GB/s of traffic in this run; "
         f"machine: {platform.machine()}, {os.cpu_count()} cores, "

@@ -19,8 +19,10 @@ vy+ 0.574 m/s, exact 0.500; error 2%
 At its default settings PyBullet lost this bounce altogether (the error is
 over the incidence speed scale, here ``|vx| = 3`` m/s); with its contact margin,
 position correction and restitution threshold set to 0 it gives the exact
-answer, and a calibrated MuJoCo contact comes within a few percent (see
-``docs/performance.md`` for many impacts):
+answer at this contact phase (0.5, the default), though not for every phase
+late in a time step unless its ``contact_slop`` is 0 too, and a calibrated
+MuJoCo contact comes within a few percent (see ``docs/performance.md`` for many
+impacts):
 
 >>> exact = dict(contact_breaking_threshold=0, contact_erp=0, restitution_velocity_threshold=0)
 >>> run = bounce("pybullet", ball, vx=3.0, vy=-1.0, omega=0.0, mu=0.1, kappa=0.5, **exact)
