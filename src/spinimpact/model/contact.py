@@ -79,9 +79,36 @@ class ContactLaw:
 
     A law gives the signed force ``force(delta, delta_dot)`` in N (the integrator
     applies ``max(N, 0)``), a ``time_scale(mass, speed)`` in s of the order of
-    the contact duration, and the power ``separation_exponent`` with which the
-    force vanishes at separation.
+    the contact duration, the power ``separation_exponent`` with which the
+    force vanishes at separation, and whether it is ``elastic``.
+
+    Every restitution a law reports is in ``[0, 1]``: exactly 1 for an elastic law,
+    and for a damped one the value measured on the integrated impact, clipped to at
+    most 1 (see :meth:`restitutions`).
     """
+
+    @property
+    def elastic(self) -> bool:
+        """Whether the law has no damping: its force depends on the compression
+        alone, so it returns all the energy it stores and its restitution is 1."""
+        return False
+
+    def restitutions(self, run: kernels.ContactRun) -> tuple[float, float, float]:
+        """Newton's, Poisson's and the energetic restitution of an integrated impact
+        (:func:`~spinimpact.core.contact.integrate_contact`) as this law gives them.
+
+        An elastic law's are exactly 1: its force is a function of the compression
+        alone, so the work of compression comes back in full and the impulses of the
+        two phases are equal, whatever the integrator's error. A damped law's are the
+        values measured on the process, clipped to ``[0, 1]``: a passive force (a
+        spring and a dashpot that never pull) cannot return more energy than it
+        received, so a value above 1 is integration error (below ``100 rtol``; see
+        ``docs/dynamics.md`` for the measured sizes).
+        """
+        if self.elastic:
+            return 1.0, 1.0, 1.0
+        measured = (run.newton_restitution, run.poisson_restitution, run.energetic_restitution)
+        return tuple(min(max(float(k), 0.0), 1.0) for k in measured)  # type: ignore[return-value]
 
     def force(self, delta: float, delta_dot: float) -> float:  # pragma: no cover - abstract
         raise NotImplementedError
@@ -119,12 +146,13 @@ class ContactLaw:
             self.force, m, v, time_scale=self.time_scale(m, v), rtol=tol,
             exponent=self.separation_exponent,
         )  # fmt: skip
-        values = (v, run.newton_restitution, run.t1, run.peak_force, run.max_compression)
+        values = (v, self.restitutions(run)[0], run.t1, run.peak_force, run.max_compression)
         return NormalImpact(*(freeze(x) for x in values))
 
     def restitution(self, mass: float, speed: float, *, rtol: float = 1e-10) -> float:
-        """Newton's restitution ``kappa`` this law gives a body of ``mass`` (kg) at
-        impact ``speed`` (m/s)."""
+        """Newton's restitution ``kappa`` in ``[0, 1]`` this law gives a body of
+        ``mass`` (kg) at impact ``speed`` (m/s): exactly 1 for an elastic law, so
+        ``solve(kappa=law.restitution(...))`` always accepts it."""
         return float(self.normal_impact(mass, speed, rtol=rtol).restitution)
 
     def restitution_model(
@@ -144,8 +172,8 @@ class ContactLaw:
         if s.ndim != 1 or s.size < 1:
             raise ValueError(f"speeds must be a 1-D array of speeds, got shape {s.shape}")
         s = np.sort(s)
-        kappas = [self.restitution(mass, float(v), rtol=rtol) for v in s]
-        return TabulatedRestitution(s, np.clip(kappas, 0.0, 1.0))
+        kappas = [self.restitution(mass, float(v), rtol=rtol) for v in s]  # in [0, 1]
+        return TabulatedRestitution(s, kappas)
 
 
 @dataclass(frozen=True)
@@ -175,6 +203,11 @@ class LinearContact(ContactLaw):
     def __post_init__(self) -> None:
         for name in ("stiffness", "damping"):
             object.__setattr__(self, name, _parameter(name, getattr(self, name)))
+
+    @property
+    def elastic(self) -> bool:
+        """No dashpot (``damping = 0``): the restitution is 1."""
+        return self.damping == 0.0
 
     def force(self, delta: float, delta_dot: float) -> float:
         return kernels.linear_force(delta, delta_dot, self.stiffness, self.damping)
@@ -225,6 +258,11 @@ class HuntCrossleyContact(ContactLaw):
     def __post_init__(self) -> None:
         for name in ("stiffness", "exponent", "alpha"):
             object.__setattr__(self, name, _parameter(name, getattr(self, name)))
+
+    @property
+    def elastic(self) -> bool:
+        """No damping (``alpha = 0``): the restitution is 1."""
+        return self.alpha == 0.0
 
     def force(self, delta: float, delta_dot: float) -> float:
         return kernels.hunt_crossley_force(

@@ -46,7 +46,11 @@ class Simulation(Result):
     newton_restitution, poisson_restitution, energetic_restitution : float
         ``-v+/v-`` (eq. 1.1); ``(tau1 - tau0)/tau0`` with ``tau0`` the impulse at
         the end of compression (eq. 1.2); ``sqrt(-W_r^n/W_c^n)`` from the works of
-        the normal force (eq. 1.3).
+        the normal force (eq. 1.3). Measured on this run and clipped to ``[0, 1]``
+        for a damped law, exactly 1 for an elastic one
+        (:meth:`ContactLaw.restitutions`): the rebound ``after`` is the one
+        integrated, so ``-after.vy/before.vy`` may differ from 1 by the
+        integration error.
     contact_duration, peak_force, max_compression : float
         s, N, m. The compression is largest at the end of compression (an event);
         the peak force is the largest over the output samples.
@@ -95,10 +99,12 @@ class Simulation(Result):
 
     def rigid(self) -> Impact:
         """The rigid-body closed form with ``kappa`` set to this law's Newton
-        restitution: Keller's result says the rebound must agree."""
+        restitution: Keller's result says the rebound must agree, to rounding where
+        the restitution is the one measured on this run, and to the integration
+        error for an elastic law (restitution exactly 1) or where the measured
+        value was clipped to 1."""
         b = self.before
-        return solve(self.body, b.vx, b.vy, b.omega, mu=self.mu,
-                     kappa=min(max(self.newton_restitution, 0.0), 1.0))  # fmt: skip
+        return solve(self.body, b.vx, b.vy, b.omega, mu=self.mu, kappa=self.newton_restitution)
 
 
 def simulate(
@@ -186,15 +192,16 @@ def simulate(
     t_star = run.t_star
     tau_star = float(np.interp(t_star, run.t, run.tau)) if not math.isnan(t_star) else math.nan
     tau1, f1 = float(run.tau[-1]), float(run.tangential_impulse[-1])
+    newton, poisson, energetic = contact.restitutions(run)  # in [0, 1]; 1 if elastic
     return Simulation(
         body=body,
         mu=mu_,
         contact=contact,
         before=State(*(freeze(x) for x in (vx_, vy_, om_))),
         after=State(*(freeze(x[-1]) for x in (run.vx, run.vy, run.omega))),
-        newton_restitution=run.newton_restitution,
-        poisson_restitution=run.poisson_restitution,
-        energetic_restitution=run.energetic_restitution,
+        newton_restitution=newton,
+        poisson_restitution=poisson,
+        energetic_restitution=energetic,
         contact_duration=run.t1,
         peak_force=run.peak_force,
         max_compression=run.max_compression,
