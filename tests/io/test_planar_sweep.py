@@ -144,3 +144,17 @@ def test_unknown_fields_list_the_planar_ones():
     with pytest.raises(ValueError, match="histogram field must be among"):
         run_sweep(sweep, histogram=("before_vx", 0, 1, 2))  # an input of a free body
     assert sweep.chunk_size == 100_000  # a chunk solved whole: about 60 MB
+
+
+def test_axes_are_taken_only_under_their_own_names():
+    from spinimpact.io.sweep import Axis
+
+    built_as_vx = axes(GRID) | {"vy": Axis("vx", "fixed", 4.0)}
+    with pytest.raises(ValueError, match=r"axes\['vy'\] is an axis of vx"):
+        PlanarSweep(ROD, built_as_vx)
+    with pytest.raises(ValueError, match="no axis 'spin'"):
+        PlanarSweep(ROD, axes(GRID) | {"spin": Axis("omega", "fixed", 1.0)})
+    with pytest.raises(TypeError, match="samples must be a positive integer"):
+        PlanarSweep(ROD, axes(GRID), samples=True)
+    with pytest.raises(TypeError, match="chunk_size must be a positive integer"):
+        PlanarSweep(ROD, axes(GRID), chunk_size=True)

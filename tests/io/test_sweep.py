@@ -1,5 +1,6 @@
 """Sweeps in bounded memory: grids, random samples, files, reductions, Dask."""
 
+import math
 import subprocess
 import sys
 
@@ -8,7 +9,7 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.core import REGIMES
-from spinimpact.io.sweep import ALIASES, FIELDS, Sweep, dask_client, parse_axis, run_sweep
+from spinimpact.io.sweep import ALIASES, FIELDS, Axis, Sweep, dask_client, parse_axis, run_sweep
 from spinimpact.model.impact import Impact
 
 BODY = Body.solid_sphere(mass=1.0, radius=0.1)
@@ -264,3 +265,73 @@ def test_seed_is_named_when_wrong(seed, error):
     axes = {n: parse_axis(n, v) for n, v in given.items()}
     with pytest.raises(error, match=r"^seed must be an integer"):
         Sweep(Body.ring(mass=1.0, radius=0.1), axes, samples=10, seed=seed)
+
+
+FIXED = dict(vx="1", vy="-4", omega="0", mu="0.3", kappa="0.8")
+
+
+def test_an_axis_is_taken_only_under_its_own_name():
+    # built as vx, used as vy: vy = +4 would give an energy gain if computed under its key
+    axes = {n: parse_axis(n, v) for n, v in FIXED.items()} | {"vy": Axis("vx", "fixed", 4.0)}
+    with pytest.raises(ValueError, match=r"axes\['vy'\] is an axis of vx"):
+        Sweep(BODY, axes)
+    # even where the value would pass under both names
+    axes["vy"] = Axis("vx", "fixed", -4.0)
+    with pytest.raises(ValueError, match=r"axes\['vy'\] is an axis of vx"):
+        Sweep(BODY, axes)
+    axes["vy"] = Axis("vy", "fixed", 4.0)
+    with pytest.raises(ValueError, match="vy must be < 0"):
+        Sweep(BODY, axes)
+    with pytest.raises(TypeError, match=r"axes\['vy'\] must be an Axis"):
+        Sweep(BODY, axes | {"vy": -4.0})
+    with pytest.raises(ValueError, match="no axis 'spin'"):
+        Sweep(BODY, axes | {"vy": Axis("vy", "fixed", -4.0), "spin": Axis("omega", "fixed", 1)})
+
+
+@pytest.mark.parametrize(
+    ("args", "error", "message"),
+    [
+        (("vx", "grid", -1.0, 1.0, 0), ValueError, "num must be an integer >= 1, got 0"),
+        (("vx", "grid", -1.0, 1.0, -5), ValueError, "num must be an integer >= 1, got -5"),
+        (("vx", "grid", -1.0, 1.0, 2.5), TypeError, "num must be an integer"),
+        (("vx", "grid", -1.0, 1.0, True), TypeError, "num must be an integer"),
+        (("vx", "fixed", 1.0, math.nan, 5), ValueError, "a fixed axis has 1"),
+        (("vx", "bogus", 1.0), ValueError, "kind must be one of fixed, grid, uniform"),
+        (("vx", "bogus", 1.0, 2.0), ValueError, "kind must be one of fixed, grid, uniform"),
+        (("spin", "fixed", 1.0), ValueError, "name must be one of vx, vy"),
+        (("vx", "fixed", "3"), TypeError, "lo must be a real number"),
+        (("vx", "fixed", True), TypeError, "lo must be a real number"),
+        (("vx", "fixed", math.inf), ValueError, "vx must be finite"),
+        (("vx", "grid", 0.0, math.nan, 3), ValueError, "vx must be finite"),
+        (("vx", "uniform", 1.0, 1.0), ValueError, "needs LOW < HIGH"),
+    ],
+)
+def test_bad_axes_are_refused_when_built(args, error, message):
+    with pytest.raises(error, match=message):
+        Axis(*args)
+
+
+@pytest.mark.parametrize("text", ["0:1:0", "0:1:-5", "uniform:2:1"])
+def test_bad_axis_texts_name_what_is_wrong(text):
+    with pytest.raises(ValueError, match=r"num must be an integer >= 1|needs LOW < HIGH"):
+        parse_axis("vx", text)
+
+
+@pytest.mark.parametrize("spec", [RANDOM, FIXED], ids=["random", "grid"])
+def test_counts_that_are_bools_are_refused(spec):
+    axes = {k: parse_axis(k, v) for k, v in spec.items()}
+    with pytest.raises(TypeError, match="samples must be a positive integer"):
+        Sweep(BODY, axes, samples=True)
+    with pytest.raises(TypeError, match="chunk_size must be a positive integer"):
+        Sweep(BODY, axes, samples=10 if spec is RANDOM else None, chunk_size=True)
+
+
+def test_a_grid_axis_is_never_built_whole():
+    # 1e10 grid points (80 GB as one array): a chunk computes only its own values
+    sweep = make(chunk_size=1000, vx="-5:5:10000000000", omega="0")
+    assert sweep.size == 10**10
+    last = sweep.chunk(sweep.chunks - 1)["vx"]
+    assert last.size == 1000 and last[-1] == 5.0
+    np.testing.assert_array_equal(
+        sweep.chunk(7)["vx"], np.arange(7000, 8000) * (10 / (10**10 - 1)) - 5
+    )

@@ -3,20 +3,59 @@
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["INPUTS", "Axis", "parse_axis"]
+__all__ = ["INPUTS", "KINDS", "Axis", "parse_axis"]
 
 #: The inputs a sweep varies (SI units): vx, vy in m/s, omega in rad/s, mu and kappa.
 INPUTS = ("vx", "vy", "omega", "mu", "kappa")
+#: The kinds of axis.
+KINDS = ("fixed", "grid", "uniform")
+
+
+def _real(name: str, value: object) -> float:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a real number, got {value!r}")
+    return float(value)
 
 
 @dataclass(frozen=True)
 class Axis:
     """One input of a sweep: ``fixed`` at ``lo``, an evenly spaced ``grid`` of
-    ``num`` values on ``[lo, hi]``, or ``uniform`` random on ``[lo, hi)`` (SI units)."""
+    ``num`` values on ``[lo, hi]``, or ``uniform`` random on ``[lo, hi)`` (SI units).
+
+    Parameters
+    ----------
+    name : str
+        The input, one of :data:`INPUTS`; a sweep takes the axis only under this name.
+    kind : {"fixed", "grid", "uniform"}
+    lo, hi : float
+        The value (``fixed``; ``hi`` unused), or the ends (finite; ``lo < hi`` for
+        ``uniform``).
+    num : int
+        Number of grid points, ``>= 1``; ``1`` for the other kinds.
+
+    Raises
+    ------
+    TypeError
+        For a name or kind that is not a string, ends that are not real numbers, or a
+        ``num`` that is not an integer (``2.5``, ``True``).
+    ValueError
+        For an unknown name or kind, ends that are not finite, ``lo >= hi`` for a
+        uniform axis, ``num < 1``, or ``num != 1`` for an axis that is not a grid.
+
+    Examples
+    --------
+    >>> Axis("vx", "grid", -5.0, 5.0, 3).take([0, 1, 2])
+    array([-5.,  0.,  5.])
+    >>> Axis("vx", "grid", -5.0, 5.0, 0)
+    Traceback (most recent call last):
+    ...
+    ValueError: vx: a grid's num must be an integer >= 1, got 0
+    """
 
     name: str
     kind: str
@@ -24,8 +63,56 @@ class Axis:
     hi: float = math.nan
     num: int = 1
 
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or self.name not in INPUTS:
+            raise ValueError(
+                f"an axis's name must be one of {', '.join(INPUTS)}, got {self.name!r}"
+            )
+        if not isinstance(self.kind, str) or self.kind not in KINDS:
+            raise ValueError(
+                f"{self.name}: an axis's kind must be one of {', '.join(KINDS)}, got {self.kind!r}"
+            )
+        lo = _real(f"{self.name}: lo", self.lo)
+        hi = _real(f"{self.name}: hi", self.hi)
+        for x in [lo] if self.kind == "fixed" else [lo, hi]:
+            if not math.isfinite(x):
+                raise ValueError(f"{self.name} must be finite, got {x!r}")
+        if self.kind == "uniform" and not lo < hi:
+            raise ValueError(f"{self.name}: uniform:LOW:HIGH needs LOW < HIGH, got {lo!r}, {hi!r}")
+        num = self.num
+        if isinstance(num, bool) or not isinstance(num, numbers.Integral):
+            raise TypeError(f"{self.name}: num must be an integer, got {num!r}")
+        if self.kind == "grid" and num < 1:
+            raise ValueError(f"{self.name}: a grid's num must be an integer >= 1, got {num!r}")
+        if self.kind != "grid" and num != 1:
+            raise ValueError(f"{self.name}: num is a grid's number of points; a {self.kind} "
+                             f"axis has 1, got {num!r}")  # fmt: skip
+        object.__setattr__(self, "lo", lo)
+        object.__setattr__(self, "hi", hi)
+        object.__setattr__(self, "num", int(num))
+
+    def take(self, index: np.ndarray) -> np.ndarray:
+        """The grid's values at the points ``index`` (integers in ``[0, num)``).
+
+        Equal to ``numpy.linspace(lo, hi, num)[index]`` bit for bit (the same
+        operations: ``i*step + lo``, the last point ``hi``) without building the grid, so
+        the memory of a chunk does not grow with the number of grid points.
+        """
+        index = np.asarray(index)
+        if self.kind != "grid":
+            return np.full(index.shape, self.lo)
+        if self.num == 1:
+            return np.full(index.shape, 0.0 * (self.hi - self.lo) + self.lo)
+        step = (self.hi - self.lo) / (self.num - 1)
+        if step == 0:  # linspace's route when the step underflows
+            out = index / (self.num - 1) * (self.hi - self.lo) + self.lo
+        else:
+            out = index * step + self.lo
+        out[index == self.num - 1] = self.hi
+        return out
+
     def values(self) -> np.ndarray:
-        """The grid's values (or the single fixed value)."""
+        """The grid's values (or the single fixed value); the whole grid in memory."""
         return (
             np.linspace(self.lo, self.hi, self.num) if self.kind == "grid" else np.array([self.lo])
         )
@@ -45,7 +132,8 @@ def parse_axis(name: str, text: str | float) -> Axis:
     Raises
     ------
     ValueError
-        For an unknown ``name`` or text of none of the three forms.
+        For an unknown ``name``, text of none of the three forms, or numbers an
+        :class:`Axis` refuses (not finite, ``LOW >= HIGH``, ``NUM < 1``).
 
     Examples
     --------
@@ -57,19 +145,17 @@ def parse_axis(name: str, text: str | float) -> Axis:
     parts = str(text).split(":")
     try:
         if len(parts) == 1:
-            return Axis(name, "fixed", float(parts[0]))
-        if len(parts) == 3 and parts[0] == "uniform":
-            lo, hi = float(parts[1]), float(parts[2])
-            if not lo < hi:
-                raise ValueError
-            return Axis(name, "uniform", lo, hi)
-        if len(parts) == 3:
-            num = int(parts[2])
-            if num < 1:
-                raise ValueError
-            return Axis(name, "grid", float(parts[0]), float(parts[1]), num)
+            spec: tuple = ("fixed", float(parts[0]))
+        elif len(parts) == 3 and parts[0] == "uniform":
+            spec = ("uniform", float(parts[1]), float(parts[2]))
+        elif len(parts) == 3:
+            spec = ("grid", float(parts[0]), float(parts[1]), int(parts[2]))
+        else:
+            spec = ()
     except ValueError:
-        pass
+        spec = ()
+    if spec:
+        return Axis(name, *spec)  # its own message for what the numbers break
     raise ValueError(
         f"{name} must be a number, START:STOP:NUM (a grid) or uniform:LOW:HIGH, got {text!r}"
     )

@@ -148,8 +148,10 @@ class PlanarSweep(Sweep):
             raise TypeError(f"law must be one of {', '.join(LAWS)}, got {self.law!r}")
         if self.law not in LAWS:
             raise ValueError(f"law must be one of {', '.join(LAWS)}, got {self.law!r}")
-        extra = [n for n in self.axes if n not in self.inputs]
-        if extra:
+        extra = (
+            [n for n in self.axes if n not in self.inputs] if isinstance(self.axes, dict) else []
+        )
+        if extra and self.pendulum and set(extra) <= {"vx", "vy"}:
             raise ValueError(
                 f"a pendulum's sweep has no {' or '.join(extra)} axis: its centre moves with "
                 f"omega (its inputs are {', '.join(self.inputs)})"

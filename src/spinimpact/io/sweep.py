@@ -75,7 +75,7 @@ class Sweep:
         A single body (scalar mass in kg, radius and gyration in m).
     axes : dict
         ``name -> Axis`` for each of ``vx, vy`` (m/s), ``omega`` (rad/s), ``mu,
-        kappa`` (all required).
+        kappa`` (all required), each :class:`Axis` built under the name it is given as.
     samples : int, optional
         Number of random points; required when any axis is ``uniform``, which
         excludes ``grid`` axes.
@@ -87,12 +87,14 @@ class Sweep:
     Raises
     ------
     TypeError
-        For a ``body`` that is not a :class:`~spinimpact.Body`, or a ``samples`` or
-        ``chunk_size`` that is not an integer.
+        For a ``body`` that is not a :class:`~spinimpact.Body`, an axis that is not an
+        :class:`Axis`, or a ``samples`` or ``chunk_size`` that is not an integer
+        (``True`` included).
     ValueError
-        For an array of bodies, a missing axis, grid and random axes mixed, a
-        missing or non-positive ``samples``, or an axis whose values break the
-        input rules (``vy < 0``, ``mu >= 0``, ``kappa`` in ``[0, 1]``, ...).
+        For an array of bodies, a missing or unknown axis, an axis given under another
+        input's name, grid and random axes mixed, a missing or non-positive
+        ``samples``, or an axis whose values break the input rules (``vy < 0``,
+        ``mu >= 0``, ``kappa`` in ``[0, 1]``, ...).
     """
 
     body: Body
@@ -110,25 +112,43 @@ class Sweep:
         if any(np.ndim(x) for x in (b.mass, b.radius, b.gyration)):
             raise ValueError("a sweep needs a single body, not an array of bodies")
         self._check_axes()
-        for a in self.axes.values():  # every value an axis can take obeys the input rules
+        for name, a in self.axes.items():  # every value an axis can take obeys the input rules
             ends = [a.lo] if a.kind == "fixed" else [a.lo, a.hi]
             for x in ends:
-                validated(a.name, x)
+                validated(name, x)
         body = {name: float(getattr(b, name)) for name in ("mass", "radius", "zeta", "inertia")}
         object.__setattr__(self, "_body", body)
 
     def _check_axes(self) -> None:
-        """An axis for each input; a grid or random samples, not both; the counts."""
+        """An :class:`Axis` of each input under its own name; a grid or random samples,
+        not both; the counts. The axes are copied: later changes to the caller's dict
+        do not reach the validated sweep."""
+        if not isinstance(self.axes, dict):
+            raise TypeError(f"axes must be a dict of name -> Axis, got {type(self.axes).__name__}")
+        object.__setattr__(self, "axes", dict(self.axes))
+        for key, a in self.axes.items():
+            if key not in self.inputs:
+                raise ValueError(
+                    f"the sweep has no axis {key!r}: its inputs are {', '.join(self.inputs)}"
+                )
+            if not isinstance(a, Axis):
+                raise TypeError(f"axes[{key!r}] must be an Axis, got {a!r}")
+            if a.name != key:  # it would be validated as one input and computed as another
+                raise ValueError(
+                    f"axes[{key!r}] is an axis of {a.name}: build it as Axis({key!r}, ...) "
+                    f"or parse_axis({key!r}, ...)"
+                )
         missing = [n for n in self.inputs if n not in self.axes]
         if missing:
             raise ValueError(f"the sweep needs a value or range for {', '.join(missing)}")
+        if self.samples is not None:
+            _positive_int("samples", self.samples, " for random axes")
         kinds = {a.kind for a in self.axes.values()}
         if "uniform" in kinds:
             if "grid" in kinds:
                 raise ValueError("a sweep is either a grid or random samples, not both")
             if self.samples is None:
                 raise ValueError("samples must be a positive integer for random axes, got None")
-            _positive_int("samples", self.samples, " for random axes")
         elif self.samples is not None:
             raise ValueError("samples is for random (uniform) axes only")
         _positive_int("chunk_size", self.chunk_size)
@@ -185,10 +205,8 @@ class Sweep:
             return out
         shape = tuple(self.axes[name].num for name in self.inputs)
         index = np.unravel_index(np.arange(start, start + n), shape)
-        return {
-            name: self.axes[name].values()[i]
-            if self.axes[name].kind == "grid"
-            else self.axes[name].lo
+        return {  # each grid's values at the chunk's points: the axes are never built whole
+            name: self.axes[name].take(i) if self.axes[name].kind == "grid" else self.axes[name].lo
             for name, i in zip(self.inputs, index, strict=True)
         }
 
