@@ -23,6 +23,7 @@ from .pictures import figures_command, map_command
 from .planar import planar_command
 from .simulate import simulate_command
 from .solve import report_command, solve_command
+from .sphere import pair_command, sphere_command
 from .sweep import sweep_command
 
 __all__ = ["main", "cli", "DEFAULTS"]
@@ -47,6 +48,8 @@ for _command in (
     map_command,
     figures_command,
     planar_command,
+    sphere_command,
+    pair_command,
 ):
     cli.add_command(_command)
 
