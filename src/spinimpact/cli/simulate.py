@@ -20,6 +20,37 @@ _LAW_OPTIONS = {
 _DEFAULT_STIFFNESS = {"linear": 1e6, "hunt-crossley": 1e8}
 
 
+def _g(x: float) -> str:
+    """``2e9`` rather than ``2e+09`` in the help."""
+    return f"{x:g}".replace("e+0", "e").replace("e+", "e")
+
+
+#: Default material of the Hertz law: E in Pa, nu.
+_HERTZ = {"youngs_modulus": 2e9, "poisson_ratio": 0.35}
+
+
+def _target(o: dict[str, Any]) -> tuple[float | None, str]:
+    """The restitution to calibrate the law to, and the option that set it (in words).
+
+    ``--kappa`` (or its older name ``--target-kappa``) when given; else the
+    documented default ``kappa`` (as ``spinimpact solve``) unless the damping was
+    given (``--damping``, ``--alpha``): then ``None``, the law as typed.
+    """
+    kappa, target = o["kappa"], o["target_kappa"]
+    if kappa is not None and target is not None:
+        raise click.UsageError("give either --kappa or --target-kappa (its older name), not both")
+    value, flag = (kappa, "--kappa") if target is None else (target, "--target-kappa")
+    for name in ("damping", "alpha"):
+        if value is not None and o[name] is not None:
+            raise click.UsageError(f"give either --{name} or {flag}, not both")
+    if value is None:
+        damped = o["damping"] is not None or o["alpha"] is not None
+        return (None, "") if damped else (DEFAULTS["kappa"], "the default of --kappa, as solve's")
+    if not 0.0 < value <= 1.0:  # also NaN
+        raise click.UsageError(f"{flag} must be in (0, 1], got {value!r}")
+    return value, flag
+
+
 def _contact_law(o: dict[str, Any], radius: float) -> Any:
     """The contact law described by the options (``o`` is updated with the defaults).
 
@@ -28,59 +59,51 @@ def _contact_law(o: dict[str, Any], radius: float) -> Any:
     o : dict
         The command's options: ``contact``, the law's settings (``youngs_modulus``
         in Pa, ``poisson_ratio``, ``stiffness`` in N/m or N/m^n, ``damping`` in
-        N s/m, ``exponent``, ``alpha`` in s/m), ``target_kappa``, ``mass`` in kg
-        and ``vy`` in m/s.
+        N s/m, ``exponent``, ``alpha`` in s/m), ``kappa`` or ``target_kappa``,
+        ``mass`` in kg and ``vy`` in m/s.
     radius : float
         Contact radius R of the body, m (Hertz's stiffness depends on it).
 
     Returns
     -------
     ContactLaw
-        With ``--target-kappa``, a law whose damping is calibrated to give that
-        restitution at the impact speed ``|vy|``.
+        Of the kind ``--contact`` names. With a restitution to reach (:func:`_target`),
+        its damping is calibrated to give it at the impact speed ``|vy|``: a Hertz
+        law stays a :class:`HertzContact` (with Hunt-Crossley damping ``alpha``).
 
     Raises
     ------
     click.UsageError
-        For an option that does not apply to the law, or damping given together
-        with ``--target-kappa``.
+        For an option that does not apply to the law, damping given together
+        with a restitution, or a restitution outside ``(0, 1]``.
     """
     from ..model.contact import HertzContact, HuntCrossleyContact, LinearContact
 
-    speed, target = abs(o["vy"]), o["target_kappa"]
     allowed = _LAW_OPTIONS[o["contact"]]
     for name in ("youngs_modulus", "poisson_ratio", "stiffness", "damping", "exponent", "alpha"):
-        flag = "--" + name.replace("_", "-")
         if o[name] is not None and name not in allowed:
+            flag = "--" + name.replace("_", "-")
             raise click.UsageError(f"{flag} does not apply to --contact {o['contact']}")
-        if o[name] is not None and target is not None and name in ("damping", "alpha"):
-            raise click.UsageError(f"give either {flag} or --target-kappa, not both")
-    o["youngs_modulus"] = 2e9 if o["youngs_modulus"] is None else o["youngs_modulus"]
-    o["poisson_ratio"] = 0.35 if o["poisson_ratio"] is None else o["poisson_ratio"]
-    o["damping"] = o["damping"] or 0.0
-    o["alpha"] = o["alpha"] or 0.0
-    o["exponent"] = 1.5 if o["exponent"] is None else o["exponent"]
+    target, _ = _target(o)
+    speed, mass = abs(o["vy"]), o["mass"]
+    e = _HERTZ["youngs_modulus"] if o["youngs_modulus"] is None else o["youngs_modulus"]
+    nu = _HERTZ["poisson_ratio"] if o["poisson_ratio"] is None else o["poisson_ratio"]
+    n = 1.5 if o["exponent"] is None else o["exponent"]
+    k = o["stiffness"] if o["stiffness"] is not None else _DEFAULT_STIFFNESS.get(o["contact"])
     if o["contact"] == "hertz":
-        if o["stiffness"] is not None:
-            raise click.UsageError(
-                "--stiffness is for linear and hunt-crossley; hertz uses E and nu"
-            )
-        law = HertzContact(o["youngs_modulus"], o["poisson_ratio"], radius, o["alpha"])
-        if target is not None:
-            law = HuntCrossleyContact.calibrated(
-                stiffness=law.stiffness, kappa=target, mass=o["mass"], speed=speed
-            )
-        return law
-    k = o["stiffness"] if o["stiffness"] is not None else _DEFAULT_STIFFNESS[o["contact"]]
+        if target is None:
+            return HertzContact(e, nu, radius, o["alpha"] or 0.0)
+        return HertzContact.calibrated(youngs_modulus=e, poisson_ratio=nu, radius=radius,
+                                       kappa=target, mass=mass, speed=speed)  # fmt: skip
     if o["contact"] == "linear":
-        if target is not None:
-            return LinearContact.calibrated(stiffness=k, kappa=target, mass=o["mass"])
-        return LinearContact(k, o["damping"])
-    if target is not None:
-        return HuntCrossleyContact.calibrated(
-            stiffness=k, kappa=target, mass=o["mass"], speed=speed, exponent=o["exponent"]
-        )
-    return HuntCrossleyContact(k, o["exponent"], o["alpha"])
+        if target is None:
+            return LinearContact(k, o["damping"] or 0.0)
+        return LinearContact.calibrated(stiffness=k, kappa=target, mass=mass)
+    if target is None:
+        return HuntCrossleyContact(k, n, o["alpha"] or 0.0)
+    return HuntCrossleyContact.calibrated(
+        stiffness=k, kappa=target, mass=mass, speed=speed, exponent=n
+    )
 
 
 @click.command("simulate")
@@ -94,22 +117,43 @@ def _contact_law(o: dict[str, Any], radius: float) -> Any:
     show_default=True,
     help="Normal contact law.",
 )
-@click.option("--youngs-modulus", type=float, default=None, help="E, Pa (hertz; default 2e9).")
-@click.option("--poisson-ratio", type=float, default=None, help="nu (hertz; default 0.35).")
 @click.option(
-    "--stiffness", type=float, default=None, help="k: N/m (linear) or N/m^n (hunt-crossley)."
-)
-@click.option("--damping", type=float, default=None, help="c, N s/m (linear; default 0).")
-@click.option("--exponent", type=float, default=None, help="n (hunt-crossley; default 1.5).")
-@click.option(
-    "--alpha", type=float, default=None, help="Damping, s/m (hertz, hunt-crossley; default 0)."
-)
-@click.option(
-    "--target-kappa",
+    "--youngs-modulus",
     type=float,
     default=None,
-    help="Calibrate the damping so the law gives this restitution at the impact speed.",
+    help=f"E, Pa (hertz; default {_g(_HERTZ['youngs_modulus'])}).",
 )
+@click.option(
+    "--poisson-ratio",
+    type=float,
+    default=None,
+    help=f"nu (hertz; default {_HERTZ['poisson_ratio']:g}).",
+)
+@click.option(
+    "--stiffness",
+    type=float,
+    default=None,
+    help=f"k: N/m (linear; default {_g(_DEFAULT_STIFFNESS['linear'])}) or N/m^n "
+    f"(hunt-crossley; default {_g(_DEFAULT_STIFFNESS['hunt-crossley'])}). Hertz's comes "
+    "from E, nu and the radius.",
+)
+@click.option("--damping", type=float, default=None, help="c, N s/m (linear; instead of --kappa).")
+@click.option("--exponent", type=float, default=None, help="n (hunt-crossley; default 1.5).")
+@click.option(
+    "--alpha",
+    type=float,
+    default=None,
+    help="Hunt-Crossley damping, s/m (hertz, hunt-crossley; instead of --kappa).",
+)
+@click.option(
+    "--kappa",
+    type=float,
+    default=None,
+    help=f"Restitution in (0, 1] the law gives at the impact speed |vy|: its damping "
+    f"(--damping or --alpha) is calibrated to it; 1 is elastic. Default {DEFAULTS['kappa']:g}, "
+    "as solve, unless --damping or --alpha is given.",
+)
+@click.option("--target-kappa", type=float, default=None, help="Older name of --kappa.")
 @click.option("--rtol", type=float, default=1e-10, show_default=True, help="Integrator tolerance.")
 @click.option("--plot", "plot_file", default=None, help="Write N(t), F(t) and the velocities here.")
 def simulate_command(plot_file: str | None, **o: Any) -> None:
@@ -125,6 +169,13 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
     sim = simulate(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], contact=law, rtol=o["rtol"])
     from ..viz.report import print_simulation
 
+    target, source = _target(o)
+    if target == 1.0:
+        click.echo(f"{o['contact']} contact law, elastic: no damping for kappa = 1 ({source})")
+    elif target is not None:  # say what was calibrated, and to what
+        what = "damping c" if o["contact"] == "linear" else "Hunt-Crossley damping alpha"
+        click.echo(f"{o['contact']} contact law, its {what} calibrated to give kappa = "
+                   f"{target:g} at |vy| = {abs(o['vy']):g} m/s ({source})")  # fmt: skip
     print_simulation(sim)
     if plot_file:
         from ..io import atomic_path

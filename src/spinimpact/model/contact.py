@@ -102,8 +102,8 @@ class ContactLaw:
         two phases are equal, whatever the integrator's error. A damped law's are the
         values measured on the process, clipped to ``[0, 1]``: a passive force (a
         spring and a dashpot that never pull) cannot return more energy than it
-        received, so a value above 1 is integration error (below ``100 rtol``; see
-        ``docs/dynamics.md`` for the measured sizes).
+        received, so a value above 1 is integration error (of the order of the
+        tolerance; ``docs/dynamics.md`` gives measured sizes).
         """
         if self.elastic:
             return 1.0, 1.0, 1.0
@@ -328,6 +328,27 @@ class HertzContact(HuntCrossleyContact):
         object.__setattr__(self, "poisson_ratio", nu)
         object.__setattr__(self, "radius", r)
         super().__init__(float(kernels.hertz_stiffness(e, nu, r)), 1.5, alpha)
+
+    @classmethod
+    def calibrated(  # type: ignore[override]
+        cls, *, youngs_modulus: float, poisson_ratio: float, radius: float, kappa: float,
+        mass: float, speed: float,
+    ) -> HertzContact:  # fmt: skip
+        """The Hertz law of these material constants (Pa, -, m) whose Hunt-Crossley
+        damping ``alpha`` (s/m) gives restitution ``kappa`` in ``(0, 1]`` to a body of
+        ``mass`` (kg) at impact ``speed`` (m/s); still a :class:`HertzContact`.
+
+        Examples
+        --------
+        >>> law = HertzContact.calibrated(youngs_modulus=2e9, poisson_ratio=0.35,
+        ...                               radius=0.02, kappa=0.8, mass=0.05, speed=3.0)
+        >>> type(law).__name__, round(law.restitution(0.05, 3.0), 6)
+        ('HertzContact', 0.8)
+        """
+        k, m, v = _parameter("kappa", kappa), _parameter("mass", mass), _parameter("speed", speed)
+        law = cls(youngs_modulus, poisson_ratio, radius)  # validated before use
+        e, nu, r = law.youngs_modulus, law.poisson_ratio, law.radius
+        return _calibrate(lambda a: cls(e, nu, r, a / v), k, m, v)
 
     def duration(self, mass: float, speed: float) -> float:
         """Classical elastic Hertz contact duration in s (ignores ``alpha``) of a
