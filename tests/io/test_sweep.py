@@ -335,3 +335,22 @@ def test_a_grid_axis_is_never_built_whole():
     np.testing.assert_array_equal(
         sweep.chunk(7)["vx"], np.arange(7000, 8000) * (10 / (10**10 - 1)) - 5
     )
+
+
+def test_random_points_depend_on_the_seed_alone_not_on_the_chunks():
+    spec = dict(RANDOM, mu="0.3")
+    axes = {k: parse_axis(k, v) for k, v in spec.items()}
+    runs = [
+        every_point(Sweep(BODY, axes, samples=3000, seed=7, chunk_size=size), ("regime",))
+        for size in (1, 7, 1000, 2999, 10**6)
+    ]
+    for other in runs[1:]:
+        for name in ("vx", "vy", "omega", "mu", "kappa", "regime"):
+            np.testing.assert_array_equal(other[name], runs[0][name], err_msg=name)
+    # the first points of a longer sweep are the points of a shorter one
+    longer = every_point(Sweep(BODY, axes, samples=4500, seed=7, chunk_size=640), ("regime",))
+    np.testing.assert_array_equal(longer["vx"][:3000], runs[0]["vx"])
+    # another seed gives other points; each input its own stream
+    other = every_point(Sweep(BODY, axes, samples=3000, seed=8), ())
+    assert not np.any(other["vx"] == runs[0]["vx"])
+    assert not np.any((runs[0]["vx"] + 5) / 10 == (runs[0]["omega"] + 50) / 100)

@@ -190,7 +190,8 @@ def _dask_client(address: str | None) -> Any:
     type=int,
     default=0,
     show_default=True,
-    help="Seed of the random points (the points also depend on --chunk-size).",
+    help="Seed of the random points: the same seed gives the same points whatever "
+    "--chunk-size or --dask.",
 )
 @click.option(
     "--chunk-size",

@@ -14,8 +14,11 @@ core kernels, without building the whole result); ``regime`` is stored as its
 integer code, ``spinimpact.core.REGIMES[code]`` being the Impact's text. Older
 names stay accepted (:data:`ALIASES`).
 
-Random samples are drawn per chunk from ``numpy.random.default_rng([seed,
-chunk])``, so a sweep is reproducible for a given seed and chunk size.
+Random samples depend on the seed alone: each uniform input draws from its own
+stream (:class:`numpy.random.PCG64` seeded with ``[seed, index of the input in
+INPUTS]``), point ``i`` taking the stream's ``i``-th number, so the points are the
+same whatever the chunk size or the Dask cluster, and the first ``n`` points of a
+longer sweep are those of a sweep of ``n``.
 
 A planar body or a pendulum is swept by
 :class:`~spinimpact.io.planar_sweep.PlanarSweep`, a :class:`Sweep` with its own
@@ -63,6 +66,15 @@ def _positive_int(name: str, value: Any, extra: str = "") -> int:
     if value < 1:
         raise ValueError(f"{name} must be a positive integer{extra}, got {value!r}")
     return int(value)
+
+
+def _uniform(seed: int, name: str, start: int, n: int, lo: float, hi: float) -> np.ndarray:
+    """Points ``start`` to ``start + n`` of input ``name``'s random stream, uniform on
+    ``[lo, hi)``: the stream is advanced to ``start`` (each value takes one 64-bit draw),
+    so the numbers do not depend on how the points are cut into chunks."""
+    bits = np.random.PCG64(np.random.SeedSequence([seed, INPUTS.index(name)]))
+    bits.advance(start)
+    return np.random.Generator(bits).uniform(lo, hi, n)
 
 
 @dataclass(frozen=True)
@@ -197,12 +209,12 @@ class Sweep:
         start = k * self.chunk_size
         n = self.chunk_length(k)
         if self.random:
-            rng = np.random.default_rng([self.seed, k])
-            out: dict[str, Any] = {}
-            for name in self.inputs:  # a fixed order: the draws do not depend on dict order
-                a = self.axes[name]
-                out[name] = rng.uniform(a.lo, a.hi, n) if a.kind == "uniform" else a.lo
-            return out
+            return {
+                name: _uniform(self.seed, name, start, n, a.lo, a.hi)
+                if a.kind == "uniform"
+                else a.lo
+                for name, a in ((name, self.axes[name]) for name in self.inputs)
+            }
         shape = tuple(self.axes[name].num for name in self.inputs)
         index = np.unravel_index(np.arange(start, start + n), shape)
         return {  # each grid's values at the chunk's points: the axes are never built whole
