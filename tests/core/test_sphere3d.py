@@ -462,7 +462,7 @@ def _angle(a, b):
 
 def test_pair_angle_between_paths(pr):
     """Its cosine is the normalised dot product of the velocities after (to rounding);
-    the angle itself is precise only to ``sqrt(eps)`` near 0 and pi (the xfail below)."""
+    the angle itself, now atan2-based, is checked near 0 below."""
     a, b = pr.ref.velocity1, pr.ref.velocity2
     got = pr.imp.angle_between_paths
     assert np.all((got >= 0) & (got <= np.pi))
@@ -471,12 +471,9 @@ def test_pair_angle_between_paths(pr):
     np.testing.assert_allclose(got, _angle(a, b), rtol=0, atol=1e-7)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="angle_between_paths loses half the digits for nearly parallel paths "
-    "(0 instead of 4e-9 rad): arccos of a cosine near 1, not atan2(|a x b|, a.b)",
-)
 def test_angle_between_nearly_parallel_paths_is_precise():
+    """Found by this suite: the angle was arccos of a cosine near 1 (0 instead of 4e-9 rad);
+    it is now atan2(|a x b|, a.b)."""
     b = Body.solid_sphere(mass=1.0, radius=0.1)
     imp = solve_pair(b, b, velocity1=[1e-9, 0, -1.0], spin1=[0, 0, 0], velocity2=[0, 0, 0],
                      spin2=[0, 0, 0], normal=[0, 0, 1], mu=0.0, kappa=0.5)  # fmt: skip

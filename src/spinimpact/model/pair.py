@@ -206,9 +206,10 @@ def solve_pair(
     )  # fmt: skip
     stuck = core.sticks(speed, cn, zeta, mu_, kappa_)
     s1, s2 = np.sqrt(kernels.dot(v1b, v1b)), np.sqrt(kernels.dot(v2b, v2b))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cosine = np.clip(kernels.dot(v1b, v2b) / (s1 * s2), -1.0, 1.0)
-    angle = np.where((s1 > 0) & (s2 > 0), np.arccos(cosine), np.nan)
+    # atan2(|a x b|, a.b) keeps full precision near 0 and pi (arccos of the cosine would not)
+    sine = kernels.cross(v1b, v2b)
+    angle = np.arctan2(np.sqrt(kernels.dot(sine, sine)), kernels.dot(v1b, v2b))
+    angle = np.where((s1 > 0) & (s2 > 0), angle, np.nan)
     return PairImpact(
         ball1=ball1, ball2=ball2, mu=freeze(mu_), kappa=freeze(kappa_), normal=_vector(n),
         before1=_state(v1, w1), before2=_state(v2, w2),
