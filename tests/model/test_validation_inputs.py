@@ -187,3 +187,14 @@ def test_particle_threshold_below_the_float_range_is_minus_infinity():
     # [(1+k) mu^2 + k - 1]/(2 mu) = -0.1/mu: below -1.8e308 it is -inf, as at mu = 0
     assert p.energy_threshold[0] == -np.inf and p.energy_threshold[1] == -np.inf
     assert p.energy_threshold[2] == pytest.approx(-0.1 / 1e-300, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("gravity", "error"),
+    [(-9.8, ValueError), (0.0, ValueError), (np.array([9.8, 9.8]), TypeError),
+     ([9.8], TypeError), ("9.8", TypeError), (ma.masked, TypeError), (np.nan, ValueError)],
+)  # fmt: skip
+def test_gravity_is_validated_under_its_own_name(gravity, error):
+    """The issue: an array gravity was accepted and -9.8 was blamed on ``speeds``."""
+    with pytest.raises(error, match=r"^gravity must be a finite acceleration > 0 \(m/s\^2\)"):
+        si.TabulatedRestitution.from_drop_heights([1.0, 2.0], [0.5, 1.0], gravity=gravity)
