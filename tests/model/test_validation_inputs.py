@@ -198,3 +198,16 @@ def test_gravity_is_validated_under_its_own_name(gravity, error):
     """The issue: an array gravity was accepted and -9.8 was blamed on ``speeds``."""
     with pytest.raises(error, match=r"^gravity must be a finite acceleration > 0 \(m/s\^2\)"):
         si.TabulatedRestitution.from_drop_heights([1.0, 2.0], [0.5, 1.0], gravity=gravity)
+
+
+@pytest.mark.parametrize(
+    "model",
+    [si.ConstantRestitution(0.5), si.TabulatedRestitution([1.0, 3.0], [0.9, 0.7])],
+    ids=["constant", "tabulated"],
+)
+def test_restitution_models_called_directly_refuse_masked_speeds(model):
+    with pytest.raises(ValueError, match=r"^speed must not have masked .*index 1"):
+        model(ma.array([2.0, 1e6], mask=[False, True]))
+    with pytest.raises(TypeError, match=r"^speed must be a real number"):
+        model("fast")
+    np.testing.assert_array_equal(model(np.array([2.0, 2.0])), model(2.0) * np.ones(2))

@@ -42,7 +42,7 @@ class ConstantRestitution(RestitutionModel):
         self.kappa = scalar("kappa", kappa)
 
     def __call__(self, speed: np.ndarray) -> np.ndarray:
-        return np.full(np.shape(speed), self.kappa)
+        return np.full(as_real_array("speed", speed).shape, self.kappa)
 
     def __repr__(self) -> str:
         return f"ConstantRestitution({self.kappa:g})"
@@ -141,7 +141,7 @@ class TabulatedRestitution(RestitutionModel):
         )
 
     def __call__(self, speed: np.ndarray) -> np.ndarray:
-        v = np.asarray(speed, dtype=float)
+        v = as_real_array("speed", speed)  # a masked speed is refused, not read through
         if self.extrapolate == "error":
             outside = (v < self.speeds[0]) | (v > self.speeds[-1])
             if np.any(outside):
