@@ -106,8 +106,15 @@ def test_outputs_hold_the_fields_with_their_types_and_metadata(tmp_path):
     assert table.schema.field("after_vx").metadata == {b"unit": b"m/s"}
     got = every_point(sweep, fields)
     for name in ("vx", "kappa", *fields):
-        np.testing.assert_array_equal(table.column(name).to_numpy(), got[name], err_msg=name)
+        want = np.asarray(PLANAR_REGIMES)[got[name]] if name == "regime" else got[name]
+        np.testing.assert_array_equal(table.column(name).to_numpy(), want, err_msg=name)
         np.testing.assert_array_equal(np.load(tmp_path / "d" / f"{name}.npy"), got[name])
+    assert (
+        str(table.schema.field("regime").type)
+        == "dictionary<values=string, indices=int8, ordered=0>"
+    )
+    described = json.loads((tmp_path / "d" / "metadata.json").read_text())
+    assert described["regimes"] == list(PLANAR_REGIMES) and described["law"] == "energetic"
     assert np.load(tmp_path / "d" / "creates_energy.npy").dtype == bool
     assert np.load(tmp_path / "d" / "regime.npy").dtype == np.int8
     energy = solve_planar(ROD, got["vx"], got["vy"], got["omega"], mu=got["mu"],

@@ -9,7 +9,15 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.core import REGIMES
-from spinimpact.io.sweep import ALIASES, FIELDS, Axis, Sweep, dask_client, parse_axis, run_sweep
+from spinimpact.io.sweep import (
+    ALIASES,
+    FIELDS,
+    Axis,
+    Sweep,
+    dask_client,
+    parse_axis,
+    run_sweep,
+)
 from spinimpact.model.impact import Impact
 
 BODY = Body.solid_sphere(mass=1.0, radius=0.1)
@@ -225,7 +233,8 @@ def test_old_field_names_are_aliases(tmp_path):
     # a field asked for by its old name is written under that name
     run_sweep(sweep, output=tmp_path / "old", fields=("energy_loss",))
     assert sorted(p.name for p in (tmp_path / "old").iterdir()) == [
-        "energy_loss.npy", "kappa.npy", "mu.npy", "omega.npy", "vx.npy", "vy.npy",
+        "energy_loss.npy", "kappa.npy", "metadata.json", "mu.npy", "omega.npy", "vx.npy",
+        "vy.npy",
     ]  # fmt: skip
     with pytest.raises(ValueError, match=r"fields must be among .*\(or energy_loss for "):
         run_sweep(sweep, fields=("loss",))

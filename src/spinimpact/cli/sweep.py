@@ -6,6 +6,12 @@ for one planar body (``rod``, ``block``, ``eccentric-disk``: the geometry option
 pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``
 (:class:`~spinimpact.io.planar_sweep.PlanarSweep`). The fields are then the
 :class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones.
+
+Before computing, a trial chunk estimates the time, the memory of a chunk and the size
+of the output (:func:`~spinimpact.io.sweep.estimate_sweep`); a sweep whose chunk does
+not fit in memory, whose output does not fit on its disk, or that would take more than
+an hour is refused in one line unless ``--force`` is given; ``--dry-run`` prints the
+estimate and stops.
 """
 
 from __future__ import annotations
@@ -25,6 +31,11 @@ _CUSTOM = ("inertia", "rx", "ry")
 _GEOMETRY = ("length", "width", "height", "radius", "gyration", "offset", "angle", "angle_deg")
 #: Options that only a --planar sweep takes.
 _PLANAR_ONLY = ("law", *_CUSTOM, "length", "width", "height", "offset", "angle", "angle_deg")
+#: The axes of --vx and --omega when not typed: a grid, or ranges to draw random points from.
+_GRID = {"vx": "-5:5:201", "omega": "-50:50:201"}
+_RANDOM = {"vx": "uniform:-5:5", "omega": "uniform:-50:50"}
+#: A sweep estimated to take longer than this is refused unless --force is given.
+MAX_SECONDS = 3600.0
 
 
 def _given(ctx: click.Context, name: str) -> bool:
@@ -71,12 +82,28 @@ def _planar_body(ctx: click.Context, o: dict[str, Any]) -> Any:
     return make_planar_body(name, o["mass"], geometry)
 
 
-def _planar_axes(ctx: click.Context, o: dict[str, Any], body: Any) -> dict[str, str]:
+def _is_random(o: dict[str, Any], samples: int | None) -> bool:
+    """Whether the user asked for random points: ``--samples`` or a typed uniform axis."""
+    typed = [o[n] for n in ("vx", "vy", "omega", "mu", "kappa") if o[n] is not None]
+    return samples is not None or any(t.strip().startswith("uniform:") for t in typed)
+
+
+def _axes(o: dict[str, Any], samples: int | None) -> dict[str, str]:
+    """The axes' texts: what was typed, and for ``--vx`` and ``--omega`` not typed a grid
+    (:data:`_GRID`), or with random points the same ranges drawn at random (:data:`_RANDOM`)."""
+    defaults = _RANDOM if _is_random(o, samples) else _GRID
+    texts = {n: o[n] for n in ("vx", "vy", "omega", "mu", "kappa")}
+    return {n: defaults[n] if t is None else t for n, t in texts.items()}
+
+
+def _planar_axes(
+    ctx: click.Context, o: dict[str, Any], body: Any, samples: int | None
+) -> dict[str, str]:
     """The axes' texts of a planar sweep; unless given, ``omega`` is ``0`` (a free body) or
     2 rad/s turning the contact toward the surface (a pendulum)."""
     from ..model.planar_body import Pendulum
 
-    axes = {n: o[n] for n in ("vx", "vy", "omega", "mu", "kappa")}
+    axes = _axes(o, samples)
     if isinstance(body, Pendulum):
         for name in ("vx", "vy"):
             if _given(ctx, name):
@@ -87,6 +114,28 @@ def _planar_axes(ctx: click.Context, o: dict[str, Any], body: Any) -> dict[str, 
     if not _given(ctx, "omega"):
         axes["omega"] = f"{-math.copysign(2.0, float(body.px)):g}" if "vx" not in axes else "0"
     return axes
+
+
+def _refuse_what_cannot_fit(cost: Any, dask: bool) -> None:
+    """Refuse in one line a sweep whose chunk does not fit in memory, whose output does not
+    fit on its disk, or that would take over :data:`MAX_SECONDS` (on a Dask cluster, only
+    the output is checked: the chunks run elsewhere).
+
+    Raises
+    ------
+    click.ClickException
+        Naming what does not fit and ``--force``.
+    """
+    import dataclasses
+
+    if dask:
+        cost = dataclasses.replace(cost, available_memory=None)
+    problems = cost.problems(max_seconds=None if dask else MAX_SECONDS)
+    if problems:
+        raise click.ClickException(
+            f"this sweep cannot run as asked: {'; '.join(problems)} (estimated from a trial "
+            "chunk; --force runs it anyway)"
+        )
 
 
 def _histogram(text: str | None) -> tuple[str, float, float, int] | None:
@@ -169,21 +218,25 @@ def _dask_client(address: str | None) -> Any:
 )
 @click.option(
     "--vx",
-    default="-5:5:201",
-    show_default=True,
-    help="Number, START:STOP:NUM or uniform:LOW:HIGH.",
+    default=None,
+    help="m/s: a number, START:STOP:NUM (a grid) or uniform:LOW:HIGH (random, with "
+    "--samples). Default -5:5:201, or uniform:-5:5 for random points.",
 )
-@click.option("--vy", default="-4", show_default=True, help="As --vx; values < 0.")
+@click.option("--vy", default="-4", show_default=True, help="As --vx, m/s; values < 0.")
 @click.option(
     "--omega",
-    default="-50:50:201",
-    show_default=True,
-    help="As --vx, rad/s (--planar: default 0, a pendulum 2 rad/s toward the surface).",
+    default=None,
+    help="As --vx, rad/s. Default -50:50:201, or uniform:-50:50 for random points "
+    "(--planar: 0, a pendulum 2 rad/s toward the surface).",
 )
 @click.option("--mu", default=str(DEFAULTS["mu"]), show_default=True, help="As --vx.")
 @click.option("--kappa", default=str(DEFAULTS["kappa"]), show_default=True, help="As --vx.")
 @click.option(
-    "--samples", type=click.IntRange(1), default=None, help="Random points (uniform axes)."
+    "--samples",
+    type=click.IntRange(1),
+    default=None,
+    help="Number of random points: the uniform axes are drawn at random (and --vx, --omega "
+    "not typed default to uniform ranges).",
 )
 @click.option(
     "--seed",
@@ -198,12 +251,16 @@ def _dask_client(address: str | None) -> Any:
     type=click.IntRange(1),
     default=1_000_000,
     show_default=True,
-    help="Points per chunk (--planar: default 100000, about 60 MB).",
+    help="Points computed at a time; memory is bounded by it (--dry-run estimates it; "
+    "--planar: default 100000).",
 )
 @click.option(
     "--output",
     default=None,
-    help="FILE.parquet ([parquet] extra) or a new directory of .npy files, one per column.",
+    help="FILE.parquet or FILE.csv ([parquet] extra), or a new directory of .npy files (a "
+    "name without a suffix, or ending in /): one per column and metadata.json. The inputs "
+    "and --fields; regime as names (a dictionary column in Parquet; in .npy, int8 indices "
+    'into metadata.json\'s "regimes"), units in Parquet field metadata and metadata.json.',
 )
 @click.option(
     "--fields",
@@ -217,23 +274,43 @@ def _dask_client(address: str | None) -> Any:
 )
 @click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
 @click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
+@click.option(
+    "--dry-run",
+    is_flag=True,
+    help="Print the estimate (points, time, memory a chunk, output size) and stop.",
+)
+@click.option(
+    "--force",
+    is_flag=True,
+    help="Run even a sweep estimated not to fit in memory or on disk, or to take over an hour.",
+)
 @click.pass_context
 def sweep_command(
-    ctx, samples, seed, chunk_size, output, fields, histogram, dask_address, **o: Any
+    ctx,
+    samples,
+    seed,
+    chunk_size,
+    output,
+    fields,
+    histogram,
+    dask_address,
+    dry_run,
+    force,
+    **o: Any,
 ) -> None:
     """Sweep a grid or random samples of incidence conditions in bounded memory:
     regime fractions (always), a histogram, and/or the fields written to files.
 
     One of the paper's bodies (--body, --gyration), or with --planar one planar body or
     pendulum under one --law, e.g. --planar rod --length 1 --angle-deg 45 --law newton."""
-    from ..io.sweep import Sweep, parse_axis, run_sweep
+    from ..io.sweep import Sweep, estimate_sweep, parse_axis, run_sweep
 
     if o["planar"] is None:
         for name in _PLANAR_ONLY:
             if _given(ctx, name):
                 raise click.UsageError(f"{_flag(name)} needs --planar (a planar body's sweep)")
         body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
-        texts = {name: o[name] for name in ("vx", "vy", "omega", "mu", "kappa")}
+        texts = _axes(o, samples)
         sweep = Sweep(
             body,
             {name: parse_axis(name, text) for name, text in texts.items()},
@@ -245,7 +322,7 @@ def sweep_command(
         from ..io.planar_sweep import PlanarSweep
 
         body = _planar_body(ctx, o)
-        texts = _planar_axes(ctx, o, body)
+        texts = _planar_axes(ctx, o, body, samples)
         size = {"chunk_size": chunk_size} if _given(ctx, "chunk_size") else {}
         sweep = PlanarSweep(
             body,
@@ -256,6 +333,16 @@ def sweep_command(
             **size,
         )
     hist = _histogram(histogram)
+    names = tuple(f.strip() for f in fields.split(",") if f.strip())
+    if dry_run or not force:
+        cost = estimate_sweep(sweep, histogram=hist, output=output, fields=names)
+        if dry_run:
+            click.echo(f"estimate: {cost}")
+        _refuse_what_cannot_fit(cost, dask=bool(dask_address))
+        if dry_run:
+            return
+        if cost.seconds >= 10:
+            click.echo(f"spinimpact: {cost}", err=True)
     client = _dask_client(dask_address)
     try:
         with progress() as bar:
@@ -264,10 +351,15 @@ def sweep_command(
                 sweep,
                 histogram=hist,
                 output=output,
-                fields=tuple(f.strip() for f in fields.split(",") if f.strip()),
+                fields=names,
                 client=client,
                 progress=lambda done, total: bar.update(task, completed=done),
+                check=False,  # checked above, or --force
             )
+    except MemoryError as exc:  # a traceback helps nobody: say what to change
+        raise click.ClickException(
+            f"out of memory ({exc or 'MemoryError'}): lower --chunk-size (now {sweep.chunk_size:,})"
+        ) from None
     finally:
         if client is not None:
             client.close()

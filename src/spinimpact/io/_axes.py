@@ -5,10 +5,11 @@ from __future__ import annotations
 import math
 import numbers
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-__all__ = ["INPUTS", "KINDS", "Axis", "parse_axis"]
+__all__ = ["INPUTS", "KINDS", "Axis", "parse_axis", "positive_int", "uniform_stream"]
 
 #: The inputs a sweep varies (SI units): vx, vy in m/s, omega in rad/s, mu and kappa.
 INPUTS = ("vx", "vy", "omega", "mu", "kappa")
@@ -116,6 +117,24 @@ class Axis:
         return (
             np.linspace(self.lo, self.hi, self.num) if self.kind == "grid" else np.array([self.lo])
         )
+
+
+def positive_int(name: str, value: Any, extra: str = "") -> int:
+    """``value`` as an int: a whole number >= 1 (not a bool), else an error naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be a positive integer{extra}, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be a positive integer{extra}, got {value!r}")
+    return int(value)
+
+
+def uniform_stream(seed: int, name: str, start: int, n: int, lo: float, hi: float) -> np.ndarray:
+    """Points ``start`` to ``start + n`` of input ``name``'s random stream, uniform on
+    ``[lo, hi)``: the stream is advanced to ``start`` (each value takes one 64-bit draw),
+    so the numbers do not depend on how the points are cut into chunks."""
+    bits = np.random.PCG64(np.random.SeedSequence([seed, INPUTS.index(name)]))
+    bits.advance(start)
+    return np.random.Generator(bits).uniform(lo, hi, n)
 
 
 def parse_axis(name: str, text: str | float) -> Axis:

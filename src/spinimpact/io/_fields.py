@@ -1,23 +1,52 @@
-"""What a sweep computes at its points: the fields, named as the Impact's columns.
+"""What a sweep computes at its points, and how its files store them.
 
 Each field is the :class:`~spinimpact.Impact` column of the same name, computed
 from a chunk's inputs with the same core kernels that :func:`~spinimpact.solve`
 calls, without building the whole result (so a sweep keeps the fused one-pass
-rebound kernel). ``regime`` is the integer code of the Impact's text,
+rebound kernel). ``regime`` is computed as the integer code of the Impact's text,
 ``spinimpact.core.REGIMES[code]``.
+
+Files name the regimes (:func:`output_kind`, :class:`TableColumns`): a Parquet file
+holds ``regime`` as a dictionary column (read back as names: a pandas ``Categorical``,
+strings in ``to_pylist()``), a CSV file as names; a directory of ``.npy`` files holds
+the codes in ``regime.npy`` and the names in ``metadata.json`` (``"regimes"``), with
+the body, each column's unit and dtype.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import contextlib
+import json
+import math
+import os
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from .. import core
+from .._validation import require
 from ..core import fused
+from ._sinks import ArrowWriter
+from ._units import UNITS, unit_metadata
+from .atomic import atomic_path
 
-__all__ = ["ALIASES", "FIELDS", "REBOUND_FIELDS", "field_name", "rebound_fields"]
+__all__ = [
+    "ALIASES",
+    "DEFAULT_FIELDS",
+    "FIELDS",
+    "REBOUND_FIELDS",
+    "TableColumns",
+    "field_name",
+    "npy_encoded_size",
+    "npy_folder",
+    "output_kind",
+    "plan",
+    "rebound_fields",
+    "table_columns",
+    "write_npy_metadata",
+]
 
 REBOUND_FIELDS = ("after_vx", "after_vy", "after_omega")
 
@@ -110,3 +139,181 @@ def field_name(name: str, role: str = "fields") -> str:
         return ALIASES[name]
     aliases = ", ".join(f"{a} for {f}" for a, f in ALIASES.items())
     raise ValueError(f"{role} must be among {', '.join(FIELDS)} (or {aliases}); got {name!r}")
+
+
+# -- files ------------------------------------------------------------------------------
+
+
+def output_kind(output: str | os.PathLike[str]) -> str:
+    """What ``output`` names: ``"parquet"``, ``"csv"`` or ``"npy"`` (a new directory).
+
+    A name ending in ``.parquet`` or ``.csv`` (any case) is a file; a name without a
+    suffix, or ending in ``/``, is a directory of ``.npy`` files.
+
+    Raises
+    ------
+    ValueError
+        For any other suffix (``x.txt``, ``x.npy``): it would otherwise become a
+        directory the user did not ask for.
+
+    Examples
+    --------
+    >>> output_kind("s.parquet"), output_kind("s.CSV"), output_kind("run1"), output_kind("v1.5/")
+    ('parquet', 'csv', 'npy', 'npy')
+    """
+    text = os.fspath(output)
+    suffix = Path(text).suffix.lower()
+    if suffix in (".parquet", ".csv"):
+        return suffix[1:]
+    if text.endswith(("/", os.sep)) or not suffix:
+        return "npy"
+    raise ValueError(
+        f"--output {text!r}: a sweep writes FILE.parquet, FILE.csv or a new directory of .npy "
+        f"files (a name without a suffix, or ending in '/'), not a {suffix} file"
+    )
+
+
+class TableColumns:
+    """Sweep columns to one Parquet or CSV file through pyarrow, chunk by chunk.
+
+    ``regime`` (integer codes) becomes a dictionary column whose dictionary is the
+    regimes' names, so a reader gets names; each column with a unit names it in its
+    Parquet field metadata (``{"unit": "m/s"}``), and the file's metadata says what the
+    sweep was (:meth:`Sweep.metadata <spinimpact.io.sweep.Sweep.metadata>`).
+    """
+
+    def __init__(
+        self, out: Any, fmt: str, metadata: dict[str, str], regimes: Sequence[str]
+    ) -> None:
+        self.pa = require("pyarrow", "Parquet and CSV output")
+        self.writer = ArrowWriter(out, fmt)
+        self.metadata = metadata if fmt == "parquet" else None
+        self.names = self.pa.array(list(regimes), self.pa.string())
+
+    def table(self, data: dict[str, np.ndarray]) -> Any:
+        """One chunk's columns as a pyarrow table."""
+        pa = self.pa
+        fields, arrays = [], []
+        for name, values in data.items():
+            if name == "regime":
+                array = pa.DictionaryArray.from_arrays(
+                    pa.array(np.asarray(values, np.int8)), self.names
+                )
+            else:
+                array = pa.array(np.ascontiguousarray(values))
+            arrays.append(array)
+            fields.append(pa.field(name, array.type, metadata=unit_metadata(name)))
+        return pa.Table.from_arrays(arrays, schema=pa.schema(fields, self.metadata))
+
+    def write(self, data: dict[str, np.ndarray]) -> None:
+        """Append one chunk's columns."""
+        self.writer.write(self.table(data))
+
+    def close(self) -> None:
+        self.writer.close()
+
+    @classmethod
+    def encoded_size(
+        cls, data: dict[str, np.ndarray], fmt: str, metadata: dict, regimes: Sequence[str]
+    ) -> tuple[int, int]:
+        """Bytes of ``data`` written as a file of format ``fmt`` (in memory), and the bytes
+        pyarrow held meanwhile (outside Python's allocator)."""
+        pa = require("pyarrow", "Parquet and CSV output")
+        before = pa.total_allocated_bytes()
+        sink = pa.BufferOutputStream()
+        columns = cls(sink, fmt, metadata, regimes)
+        columns.write(data)
+        columns.close()
+        return sink.getvalue().size, pa.total_allocated_bytes() - before
+
+
+@contextlib.contextmanager
+def table_columns(
+    path: str | os.PathLike[str], fmt: str, metadata: dict[str, str], regimes: Sequence[str]
+) -> Iterator[TableColumns]:
+    """A :class:`TableColumns` writing the file ``path``, renamed into place on success
+    (:func:`~spinimpact.io.atomic.atomic_path`).
+
+    Raises
+    ------
+    ImportError
+        Without pyarrow, naming the ``[parquet]`` extra.
+    ValueError
+        If ``path`` is a directory or its directory does not exist.
+    """
+    what = {"parquet": "Parquet output", "csv": "CSV output"}[fmt]
+    require("pyarrow.parquet" if fmt == "parquet" else "pyarrow.csv", what)
+    target = Path(path)
+    if target.is_dir():
+        raise ValueError(f"output {str(target)!r} is a directory")
+    if not target.absolute().parent.is_dir():
+        raise ValueError(f"the directory of the output {str(target)!r} does not exist")
+    with atomic_path(target) as tmp:
+        columns = TableColumns(tmp, fmt, metadata, regimes)
+        try:
+            yield columns
+        finally:
+            columns.close()
+
+
+def write_npy_metadata(
+    directory: str | os.PathLike[str], description: dict[str, Any], dtypes: dict[str, np.dtype]
+) -> None:
+    """Write ``metadata.json`` into a sweep's directory of ``.npy`` files (while it is
+    built under its temporary name).
+
+    It holds ``description`` (the regimes' names, ``regime.npy`` holding indices into
+    them; the body; the law of a planar sweep) and, for each column, its file, dtype and
+    unit.
+    """
+    columns = {
+        name: {"file": f"{name}.npy", "dtype": str(dtype)}
+        | ({"unit": UNITS[name]} if name in UNITS else {})
+        | ({"values": "index into regimes"} if name == "regime" else {})
+        for name, dtype in dtypes.items()
+    }
+    text = json.dumps(description | {"columns": columns}, indent=2) + "\n"
+    (Path(directory) / "metadata.json").write_text(text, encoding="utf-8")
+
+
+#: The fields a sweep writes unless told otherwise.
+DEFAULT_FIELDS = ("after_vx", "after_vy", "after_omega", "regime")
+
+
+def plan(
+    sweep: Any,
+    fields: tuple[str, ...],
+    histogram: tuple[str, float, float, int] | None,
+    output: str | os.PathLike[str] | None,
+) -> tuple[str | None, tuple[str, ...]]:
+    """Check the fields and the histogram; the output's kind and the columns it holds."""
+    for name in fields:
+        sweep.field_name(name)
+    if histogram is not None:
+        name, lo, hi, bins = histogram
+        sweep.field_name(name, "histogram field")
+        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
+            raise ValueError(
+                f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
+            )
+    if output is None:
+        return None, ()
+    return output_kind(output), tuple(dict.fromkeys(sweep.inputs + tuple(fields)))
+
+
+def npy_folder(writer: Any) -> Any:
+    """The temporary folder that :func:`~spinimpact.io._sinks.npy_columns` fills and renames
+    onto the output on success (``metadata.json`` goes in with the columns)."""
+    folder = getattr(writer, "directory", None)
+    if folder is None:
+        handle, _ = next(iter(writer.files.values()))
+        folder = os.path.dirname(handle.name)
+    return folder
+
+
+def npy_encoded_size(data: dict[str, np.ndarray], dtypes: dict[str, np.dtype]) -> int:
+    """Bytes of ``data`` in ``.npy`` files, each column converted as the writer does."""
+    size = 0
+    for name, values in data.items():
+        size += len(np.ascontiguousarray(values, dtype=dtypes[name]).tobytes())
+    return size

@@ -29,9 +29,9 @@ from ..core import planar as kernels
 from ..core.planar import PLANAR_REGIMES
 from ..model.planar import LAWS, PendulumImpact, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
-from ._axes import INPUTS
+from ._axes import INPUTS, positive_int
 from ._fields import ALIASES
-from .sweep import Sweep, _positive_int
+from .sweep import Sweep
 
 __all__ = ["PENDULUM_INPUTS", "PROCESS_FIELDS", "PlanarSweep", "planar_fields"]
 
@@ -157,7 +157,7 @@ class PlanarSweep(Sweep):
                 f"omega (its inputs are {', '.join(self.inputs)})"
             )
         self._check_axes()
-        _positive_int("chunk_size", self.chunk_size)
+        positive_int("chunk_size", self.chunk_size)
         for a in self.axes.values():  # the contact point's approach is checked below
             for x in [a.lo] if a.kind == "fixed" else [a.lo, a.hi]:
                 validated(a.name, x) if a.name in ("mu", "kappa") else as_real_array(a.name, x)
@@ -217,9 +217,9 @@ class PlanarSweep(Sweep):
             return np.dtype(bool)
         return super().column_dtype(name)
 
-    def metadata(self) -> dict[str, str]:
-        """The regimes' names, the body and the law."""
-        return super().metadata() | {"law": self.law}
+    def description(self) -> dict[str, Any]:
+        """The regimes' names, the body, the axes and the law."""
+        return super().description() | {"law": self.law}
 
     def evaluate(self, k: int, fields: tuple[str, ...]) -> dict[str, np.ndarray]:
         """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length.

@@ -41,10 +41,31 @@ import numpy as np
 from .. import core
 from .._validation import validated, whole
 from ..model.body import Body
-from ._axes import INPUTS, Axis, parse_axis
-from ._fields import ALIASES, FIELDS, REBOUND_FIELDS, field_name, rebound_fields
-from ._runner import Discard, chunks_in_order, dask_client
-from ._sinks import npy_columns, parquet_columns
+from ._axes import INPUTS, Axis, parse_axis, positive_int, uniform_stream
+from ._fields import (
+    ALIASES,
+    DEFAULT_FIELDS,
+    FIELDS,
+    REBOUND_FIELDS,
+    field_name,
+    npy_folder,
+    output_kind,
+    plan,
+    rebound_fields,
+    table_columns,
+    write_npy_metadata,
+)
+from ._runner import (
+    TRIAL_POINTS,
+    ChunkWork,
+    Discard,
+    SweepEstimate,
+    SweepResult,
+    chunks_in_order,
+    dask_client,
+    estimate_sweep,
+)
+from ._sinks import npy_columns
 
 __all__ = [
     "ALIASES",
@@ -52,29 +73,15 @@ __all__ = [
     "INPUTS",
     "Axis",
     "Sweep",
+    "SweepEstimate",
     "SweepResult",
     "dask_client",
+    "estimate_sweep",
     "field_name",
+    "output_kind",
     "parse_axis",
     "run_sweep",
 ]
-
-
-def _positive_int(name: str, value: Any, extra: str = "") -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be a positive integer{extra}, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be a positive integer{extra}, got {value!r}")
-    return int(value)
-
-
-def _uniform(seed: int, name: str, start: int, n: int, lo: float, hi: float) -> np.ndarray:
-    """Points ``start`` to ``start + n`` of input ``name``'s random stream, uniform on
-    ``[lo, hi)``: the stream is advanced to ``start`` (each value takes one 64-bit draw),
-    so the numbers do not depend on how the points are cut into chunks."""
-    bits = np.random.PCG64(np.random.SeedSequence([seed, INPUTS.index(name)]))
-    bits.advance(start)
-    return np.random.Generator(bits).uniform(lo, hi, n)
 
 
 @dataclass(frozen=True)
@@ -154,7 +161,7 @@ class Sweep:
         if missing:
             raise ValueError(f"the sweep needs a value or range for {', '.join(missing)}")
         if self.samples is not None:
-            _positive_int("samples", self.samples, " for random axes")
+            positive_int("samples", self.samples, " for random axes")
         kinds = {a.kind for a in self.axes.values()}
         if "uniform" in kinds:
             if "grid" in kinds:
@@ -163,7 +170,7 @@ class Sweep:
                 raise ValueError("samples must be a positive integer for random axes, got None")
         elif self.samples is not None:
             raise ValueError("samples is for random (uniform) axes only")
-        _positive_int("chunk_size", self.chunk_size)
+        positive_int("chunk_size", self.chunk_size)
 
     #: The inputs it varies, in the order of the points and of the random draws.
     inputs = INPUTS
@@ -178,10 +185,20 @@ class Sweep:
         """How column ``name`` is stored in ``.npy`` files: ``int8`` regime codes, else float."""
         return np.dtype(np.int8 if name == "regime" else np.float64)
 
+    def description(self) -> dict[str, Any]:
+        """What a file of the sweep says about itself: the regimes' names (the ``regime``
+        codes index them), the body, the axes (SI units), the samples and the seed."""
+        axes = {n: {"kind": a.kind, "lo": a.lo} | ({"hi": a.hi} if a.kind != "fixed" else {})
+                | ({"num": a.num} if a.kind == "grid" else {})
+                for n, a in self.axes.items()}  # fmt: skip
+        random = {"samples": self.samples, "seed": self.seed} if self.random else {}
+        return {"regimes": list(self.regimes), "body": self.body.to_dict(), "axes": axes} | random
+
     def metadata(self) -> dict[str, str]:
-        """What a Parquet file of the sweep says about itself: regime names and the body."""
-        body = json.dumps(self.body.to_dict())
-        return {"regimes": json.dumps(list(self.regimes)), "body": body}
+        """:meth:`description` as a Parquet file's key-value metadata (JSON text values)."""
+        return {
+            k: v if isinstance(v, str) else json.dumps(v) for k, v in self.description().items()
+        }
 
     @property
     def random(self) -> bool:
@@ -210,7 +227,7 @@ class Sweep:
         n = self.chunk_length(k)
         if self.random:
             return {
-                name: _uniform(self.seed, name, start, n, a.lo, a.hi)
+                name: uniform_stream(self.seed, name, start, n, a.lo, a.hi)
                 if a.kind == "uniform"
                 else a.lo
                 for name, a in ((name, self.axes[name]) for name in self.inputs)
@@ -256,55 +273,15 @@ class Sweep:
         return {name: np.broadcast_to(value, (n,)) for name, value in out.items()}
 
 
-@dataclass
-class SweepResult:
-    """Reductions of a sweep, folded chunk by chunk."""
-
-    points: int = 0  #: points evaluated
-    #: points per regime, in the order of ``spinimpact.core.REGIMES``
-    regime_counts: np.ndarray = field(default_factory=lambda: np.zeros(len(core.REGIMES), np.int64))
-    histogram: np.ndarray | None = None  #: counts per bin, if a histogram was asked for
-    bin_edges: np.ndarray | None = None  #: the histogram's ``bins + 1`` edges
-    regimes: tuple[str, ...] = core.REGIMES  #: the regimes' names (a planar sweep has more)
-
-    @property
-    def regime_fractions(self) -> dict[str, float]:
-        """Share of the points in each regime, by name."""
-        total = max(self.points, 1)
-        return {
-            name: int(c) / total for name, c in zip(self.regimes, self.regime_counts, strict=True)
-        }
-
-
-@dataclass(frozen=True)
-class _Work:
-    """One chunk's reductions (and columns to write): small, picklable, summable."""
-
-    sweep: Sweep
-    columns: tuple[str, ...]  #: columns to send back for writing (may be empty)
-    histogram: tuple[str, float, float, int] | None
-
-    def __call__(self, k: int) -> tuple[int, np.ndarray, np.ndarray | None, dict]:
-        hist_field = (self.histogram[0],) if self.histogram else ()
-        names = dict.fromkeys(("regime", *self.columns, *hist_field))
-        data = self.sweep.evaluate(k, tuple(n for n in names if n not in self.sweep.inputs))
-        counts = np.bincount(data["regime"], minlength=len(self.sweep.regimes))
-        hist = None
-        if self.histogram:
-            name, lo, hi, bins = self.histogram
-            values = np.asarray(data[name], np.float64)  # flags count as 0 and 1
-            hist, _ = np.histogram(values, bins=int(bins), range=(lo, hi))
-        return data["regime"].size, counts, hist, {c: data[c] for c in self.columns}
-
-
 def run_sweep(
     sweep: Sweep,
     *,
     histogram: tuple[str, float, float, int] | None = None,
     output: str | os.PathLike[str] | None = None,
-    fields: tuple[str, ...] = ("after_vx", "after_vy", "after_omega", "regime"),
+    fields: tuple[str, ...] = DEFAULT_FIELDS,
     client: Any = None,
     progress: Callable[[int, int], None] | None = None,
+    check: bool = True,
 ) -> SweepResult:
     """Evaluate ``sweep`` chunk by chunk.
 
@@ -316,14 +293,21 @@ def run_sweep(
         ``(field, low, high, bins)``: counts of a field (a name of :data:`FIELDS`
         or :data:`ALIASES`, in its unit) in ``bins`` equal bins on ``[low, high)``.
     output : str or os.PathLike, optional
-        A ``.parquet`` file (``[parquet]`` extra), or any other name: a new directory
-        of ``.npy`` files, one per column. Either holds the inputs and ``fields``.
+        ``FILE.parquet`` (``[parquet]`` extra), ``FILE.csv`` (the same extra), or a name
+        without a suffix (or ending in ``/``): a new directory of ``.npy`` files, one per
+        column, and ``metadata.json``. Each holds the inputs and ``fields``; ``regime``
+        is a dictionary column of the regimes' names in Parquet, names in CSV, and
+        indices into ``metadata.json``'s ``"regimes"`` in ``regime.npy``.
     fields : tuple of str
         Fields to write to ``output``, by the names of :data:`FIELDS` or :data:`ALIASES`.
     client : distributed.Client, optional
         Run the chunks on its Dask cluster (see :func:`dask_client`).
     progress : callable, optional
         Called after each chunk as ``progress(done, total)`` in chunks.
+    check : bool
+        Refuse, before computing anything, a sweep of more than 16,384 points whose
+        chunk would not fit in the memory available or whose output would not fit on
+        its disk (:func:`estimate_sweep`); ``False`` runs it anyway.
 
     Returns
     -------
@@ -333,10 +317,11 @@ def run_sweep(
     Raises
     ------
     ValueError
-        For an unknown field, a bad histogram, or an output that exists (a directory)
-        or whose directory does not.
+        For an unknown field, a bad histogram, an output that exists (a directory), whose
+        directory does not, or whose suffix is none of the three, or (``check``) a sweep
+        that cannot fit.
     ImportError
-        For Parquet output without pyarrow, naming the ``[parquet]`` extra.
+        For Parquet or CSV output without pyarrow, naming the ``[parquet]`` extra.
 
     Examples
     --------
@@ -348,14 +333,13 @@ def run_sweep(
     >>> result.points, result.histogram.tolist()
     (5, [0, 5, 0, 0])
     """
-    for name in fields:
-        sweep.field_name(name)
-    if histogram is not None:
-        name, lo, hi, bins = histogram
-        sweep.field_name(name, "histogram field")
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
+    kind, columns = plan(sweep, fields, histogram, output)
+    if check and sweep.size > TRIAL_POINTS:
+        cost = estimate_sweep(sweep, histogram=histogram, output=output, fields=fields, timed=False)
+        problems = cost.problems()
+        if problems:
             raise ValueError(
-                f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
+                f"the sweep cannot run as asked: {'; '.join(problems)} (check=False runs it anyway)"
             )
     regimes = tuple(sweep.regimes)
     result = SweepResult(regime_counts=np.zeros(len(regimes), np.int64), regimes=regimes)
@@ -363,23 +347,27 @@ def run_sweep(
         result.histogram = np.zeros(int(histogram[3]), np.int64)
         result.bin_edges = np.linspace(histogram[1], histogram[2], int(histogram[3]) + 1)
     window = 4 if client is None else 2 * max(1, len(getattr(client, "nthreads", lambda: {1: 1})()))
-    columns = tuple(dict.fromkeys(sweep.inputs + tuple(fields))) if output is not None else ()
-    work = _Work(sweep, columns, histogram)
-    if output is None:
+    work = ChunkWork(sweep, columns, histogram)
+    dtypes = {c: sweep.column_dtype(c) for c in columns}
+    if kind is None:
         sink: Any = Discard()
-    elif str(output).endswith(".parquet"):
-        sink = parquet_columns(output, sweep.metadata())
+    elif kind == "npy":
+        sink = npy_columns(output, columns, sweep.size, dtypes)  # type: ignore[arg-type]
     else:
-        dtypes = {c: sweep.column_dtype(c) for c in columns}
-        sink = npy_columns(output, columns, sweep.size, dtypes)
+        sink = table_columns(output, kind, sweep.metadata(), regimes)  # type: ignore[arg-type]
     with sink as writer:
-        chunks = chunks_in_order(sweep.chunks, work, client, window)
-        for k, (n, counts, hist, data) in enumerate(chunks):
+        if kind == "npy":
+            write_npy_metadata(npy_folder(writer), sweep.description(), dtypes)
+        done = 0
+        # no enumerate(): its reused tuple would keep the last chunk alive during the next
+        for n, counts, hist, data in chunks_in_order(sweep.chunks, work, client, window):
             writer.write(data)
+            del data  # one chunk's columns alive at a time
             result.points += n
             result.regime_counts += counts
             if hist is not None:
                 result.histogram += hist
+            done += 1
             if progress is not None:
-                progress(k + 1, sweep.chunks)
+                progress(done, sweep.chunks)
     return result
