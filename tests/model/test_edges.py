@@ -116,3 +116,33 @@ def test_cli_without_arguments_prints_help_and_succeeds():
     )
     assert out.returncode == 0
     assert "Usage:" in out.stdout and "solve" in out.stdout and out.stderr == ""
+
+
+@pytest.mark.parametrize("name", [None, 5, b"ring", ["ring"]])
+def test_body_name_must_be_a_string(name):
+    """A name that is not text would reach the reports (HTML, Rich, figure titles)."""
+    with pytest.raises(TypeError, match="name must be a str"):
+        Body(mass=1.0, radius=0.1, gyration=0.05, name=name)
+    assert Body(mass=1.0, radius=0.1, gyration=0.05, name=np.str_("spool")).name == "spool"
+
+
+def test_results_print_plain_python_numbers():
+    """No ``np.float64(...)`` or ``np.False_`` in what a user sees at the prompt."""
+    from spinimpact import solve_particle
+
+    imp = solve(Body.ring(mass=1.0, radius=0.1), 1.0, -2.0, 0.0, mu=0.2, kappa=0.5)
+    particle = solve_particle(1.0, -2.0, mu=0.2, kappa=0.5)
+    for obj in (imp.outcome, imp.before, imp.after, particle, particle.after):
+        text = repr(obj)
+        assert "np." not in text and "float64" not in text, text
+    assert repr(imp.outcome) == (
+        "Outcome(backward=False, reversed_spin=False, vertical=False, spinning=True, rolling=True)"
+    )
+    assert repr(particle.before) == "State(vx=1.0, vy=-2.0, omega=0.0)"
+    assert repr(particle).startswith("ParticleImpact(mass=1.0, mu=0.2, kappa=0.5, before=State(")
+    assert "creates_energy=False" in repr(particle)
+    many = solve(Body.ring(mass=1.0, radius=0.1), [1.0, 2.0], -2.0, 0.0, mu=0.2, kappa=0.5)
+    assert (
+        repr(many.before)
+        == "State(vx=array([1., 2.]), vy=array([-2., -2.]), omega=array([0., 0.]))"
+    )

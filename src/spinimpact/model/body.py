@@ -35,7 +35,8 @@ class Body(BodyColumns):
         inertia is ``J = m rho^2``. Any value is allowed: a spool or yo-yo that
         touches on its axle has ``rho > R``.
     name : str, optional
-        Label used in reports; the presets set it.
+        Label used in reports; the presets set it. Shown as plain text everywhere
+        (never read as Rich markup, HTML or mathtext).
 
     Attributes
     ----------
@@ -63,6 +64,9 @@ class Body(BodyColumns):
     _zeta: float | np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
+        if not isinstance(self.name, str):
+            raise TypeError(f"name must be a str, got {type(self.name).__name__} {self.name!r}")
+        object.__setattr__(self, "name", str(self.name))  # np.str_ and other subclasses
         for name in ("mass", "radius", "gyration"):  # TypeError or ValueError, named
             arr = validated(name, getattr(self, name))
             object.__setattr__(self, name, float(arr) if arr.ndim == 0 else arr)

@@ -12,7 +12,7 @@ from .. import core
 from .._validation import as_real_array, broadcast, check, validated, whole
 from . import result
 from .body import Body
-from .result import Result, freeze
+from .result import Result, freeze, plain_repr
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
 
@@ -30,6 +30,7 @@ class State(Result):
     vx: Array
     vy: Array
     omega: Array
+    __repr__ = plain_repr
 
 
 @dataclass(frozen=True, eq=False)
@@ -59,6 +60,7 @@ class Outcome(Result):
     vertical: Array
     spinning: Array
     rolling: Array
+    __repr__ = plain_repr
 
 
 @dataclass(frozen=True, eq=False)

@@ -15,7 +15,7 @@ import numpy as np
 from .. import core
 from .._validation import as_real_array, broadcast, check
 from .impact import State, _restitution
-from .result import Array, Result
+from .result import Array, Result, plain_repr
 from .result import freeze as _out
 
 __all__ = ["ParticleImpact", "solve_particle"]
@@ -49,6 +49,7 @@ class ParticleImpact(Result):
     energy_change: Array
     creates_energy: Array
     energy_threshold: Array
+    __repr__ = plain_repr
 
 
 def solve_particle(vx: Any, vy: Any, *, mu: Any, kappa: Any, mass: Any = 1.0) -> ParticleImpact:

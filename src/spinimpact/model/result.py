@@ -23,7 +23,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-__all__ = ["Result", "BodyColumns", "freeze"]
+__all__ = ["Result", "BodyColumns", "freeze", "plain_repr"]
 
 Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give arrays
 
@@ -52,6 +52,15 @@ def freeze(x: Any) -> Array:
     arr = np.array(x)
     arr.setflags(write=False)
     return arr[()]
+
+
+def plain_repr(obj: Any) -> str:
+    """``Name(field=value, ...)`` with NumPy scalars shown as the Python numbers and
+    booleans they hold: ``vx=1.0`` and ``backward=False``, not ``np.float64(1.0)`` and
+    ``np.False_``; arrays keep NumPy's repr."""
+    pairs = [(f.name, getattr(obj, f.name)) for f in fields(obj) if f.repr]
+    plain = (f"{k}={v.item() if np.ndim(v) == 0 and hasattr(v, 'item') else v!r}" for k, v in pairs)
+    return f"{type(obj).__name__}({', '.join(plain)})"
 
 
 @dataclass(frozen=True, eq=False)
