@@ -36,6 +36,14 @@ def solve_command(as_json: bool, **options: Any) -> None:
     With no options it solves the documented default case: a 1 kg solid sphere
     of radius 0.1 m at vx = 3 m/s, vy = -4 m/s with 10 rad/s of backspin, on a
     surface with mu = 0.2 and kappa = 0.8.
+
+    \b
+    Equations of Lubarda (2010), Keller's method in the normal impulse tau:
+      slip u = vx + R omega (eq. 4.4); regime from |u/v| against zeta mu and
+      (1 + kappa) zeta mu (eqs. 4.6, 4.14, 4.15); tau0, tau*, tau1 (eqs. 3.2,
+      4.3, 3.6); rebound (eqs. 3.4, 4.13, 4.16); energy (eqs. 5.1-5.10); works
+      (eqs. 6.1-6.11, ratio 6.15-6.19); mu_hat = f1/tau1 (eqs. 7.4, 7.7-7.9);
+      least kinetic energy (eqs. 8.1-8.6); Whittaker's particle (eq. 8.7).
     """
     imp = solve_options(options)
     if as_json:

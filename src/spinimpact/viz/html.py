@@ -10,10 +10,12 @@ from __future__ import annotations
 import base64
 import html
 import io
+import re
 from typing import Any
 
 from ..model.impact import Impact
 from ..model.particle import ParticleImpact
+from ._labels import report_title
 from .tables import Table, impact_tables, number, regime_summary
 
 __all__ = ["impact_report_html"]
@@ -64,18 +66,31 @@ def _cell(table: Table, text: str) -> str:
     return safe
 
 
+_SUB = re.compile(r"(?<=[A-Za-zτ])_([A-Za-z0-9])")
+_SUP = re.compile(r"(?<=[A-Za-zτ>])\^([A-Za-z0-9])")
+
+
+def _math(text: str) -> str:
+    """A typeset label, escaped, with its scripts set: ``W_r^n`` as W<sub>r</sub><sup>n</sup>,
+    ``E_m`` as E<sub>m</sub>. Only for the package's labels, never for user text."""
+    return _SUP.sub(r"<sup>\1</sup>", _SUB.sub(r"<sub>\1</sub>", html.escape(text)))
+
+
 def _table(table: Table) -> str:
-    """A builder table as an HTML table (headings and cells escaped)."""
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in table.columns)
+    """A builder table as an HTML table (headings and cells escaped, labels typeset)."""
+    head = "".join(f"<th>{_math(c)}</th>" for c in table.columns)
     body = "".join(
-        "<tr>" + "".join(f"<td>{_cell(table, c)}</td>" for c in row) + "</tr>" for row in table.rows
+        f"<tr><td>{_math(row[0])}</td>"
+        + "".join(f"<td>{_cell(table, c)}</td>" for c in row[1:])
+        + "</tr>"
+        for row in table.rows
     )
     return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
 
 
 def _section(table: Table) -> str:
     """Title, table and note of one builder table."""
-    note = f"<p>{html.escape(table.note)}</p>" if table.note else ""
+    note = f"<p>{_math(table.note)}</p>" if table.note else ""
     return f"<h2>{html.escape(table.title)}</h2>{_table(table)}{note}"
 
 
@@ -170,9 +185,9 @@ def impact_report_html(imp: Impact, particle: ParticleImpact | None = None) -> s
 <title>spinimpact report: {regime}</title>
 <style>{_CSS}</style><script>{_SCRIPT}</script></head>
 <body>
-<h1>Impact of a {html.escape(str(imp.body.name))} body on a rough surface</h1>
+<h1>{html.escape(report_title(imp, typeset=True))}</h1>
 <p class="sub">Regime <span class="regime" id="regime">{regime}</span>
-&nbsp; {html.escape(regime_summary(imp, typeset=True))}</p>
+&nbsp; {_math(regime_summary(imp, typeset=True))}</p>
 {grids}
 {rest}
 <h2>Figures</h2>{figures}

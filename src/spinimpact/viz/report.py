@@ -15,6 +15,7 @@ from rich.text import Text
 
 from ..model.impact import Impact
 from ..model.particle import ParticleImpact
+from ._labels import report_title
 from .tables import Table, impact_tables, number, regime_summary, simulation_table
 
 if TYPE_CHECKING:
@@ -28,7 +29,9 @@ _STYLES = {"creates energy": "bold red"}
 
 def _rich(table: Table) -> RichTable:
     """A builder table as a Rich table: labels left, values right, no markup parsed."""
-    out = RichTable(title=table.title, title_justify="left", title_style="bold", show_edge=False)
+    out = RichTable(
+        title=Text(table.title), title_justify="left", title_style="bold", show_edge=False
+    )
     for i, heading in enumerate(table.columns):
         out.add_column(Text(heading), justify="left" if i == 0 else "right")
     for row in table.rows:
@@ -78,7 +81,7 @@ def print_report(
     """
     tables = impact_tables(imp, particle)
     console = _console(console)
-    console.print(Text(f"Impact of a {imp.body.name} body on a rough surface", style="bold"))
+    console.print(Text(report_title(imp), style="bold"))
     console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), "   ", regime_summary(imp)))
     for table in tables:
         console.print()
@@ -227,7 +230,8 @@ def print_planar_report(imp: PlanarImpact, console: Console | None = None) -> No
 
     tables = planar_tables(imp)
     console = _console(console)
-    console.print(Text(f"Planar impact: {imp.body.name} on a rough surface", style="bold"))
+    surface = "a rough surface" if float(imp.mu) > 0 else "a smooth surface (mu = 0)"
+    console.print(Text(f"Planar impact: {imp.body.name} on {surface}", style="bold"))
     gain = ("   creates energy", "bold red") if bool(imp.creates_energy) else ""
     law = f"   law: {LAW_NAMES[imp.law]}"
     console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), law, gain))

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 from functools import partial
 from typing import TYPE_CHECKING, Any
 
-from ._labels import notation
+from ._labels import min_energy_words, notation
 
 if TYPE_CHECKING:
     from ..model.dynamics import Simulation
@@ -152,8 +152,12 @@ def regime_summary(imp: Impact, *, typeset: bool = False) -> str:
     """
     from ..core import regime_thresholds
 
-    low, high = regime_thresholds(imp.body.zeta, imp.mu, imp.kappa)
     label = notation(typeset)
+    if imp.regime == "frictionless":
+        return f"{label('mu')} = 0: no friction, so the slip u and the spin do not change"
+    if imp.regime == "no-slip":
+        return f"{label('|u-/v-|')} = 0: the contact point has no slip before or after"
+    low, high = regime_thresholds(imp.body.zeta, imp.mu, imp.kappa)
     return (
         f"{label('|u-/v-|')} = {number(imp.incidence_ratio)} (stick in compression if "
         f"{label('<= zeta*mu')} = {number(low)}; stick before rebound if "
@@ -264,7 +268,7 @@ def impact_tables(
             ("energy", "J", "of E-"),
             *((name, n(value), _share(value, e0)) for name, value in energies),
             note=f"Minimum energy at {label('tau_m')} = {n(imp.tau_min_energy, 'N s')}: "
-            f"{imp.min_energy_case}",
+            f"{min_energy_words(imp)}",
         ),
         table(
             "works",
@@ -293,7 +297,7 @@ def impact_tables(
             ("reversed spin", _flag(o.reversed_spin)),
             ("vertical rebound", _flag(o.vertical)),
             ("leaves spinning", _flag(o.spinning)),
-            ("leaves rolling (u+ = 0)", _flag(o.rolling)),
+            ("leaves without slip (u+ = 0)", _flag(o.rolling)),
         ),
     )
     if particle is not None:
