@@ -56,7 +56,7 @@ def test_history_figure_draws_the_process(impact):
 
 def test_routh_and_energy_figures(impact):
     fig = plot_routh(impact)
-    f = [ln for ln in fig.get_axes()[0].get_lines() if ln.get_label() == "f(τ)"][0]
+    f = [ln for ln in fig.get_axes()[0].get_lines() if ln.get_label() == r"$f(\tau)$"][0]
     assert f.get_ydata()[-1] == pytest.approx(float(impact.tangential_impulse))
     fig = plot_energy(impact)
     ax, bars = fig.get_axes()
@@ -163,7 +163,7 @@ def test_incidence_grid_is_dimensionless_and_oriented():
 def test_map_figure_panels():
     fig = plot_map(Body.ring(mass=1.0, radius=0.1), mu=0.3, kappa=0.5, n=40)
     titles = [ax.get_title() for ax in fig.get_axes()]
-    for needle in ("regime", "rebound outcome", "energy lost", "μ̂", "W_r^t/W_c^t"):
+    for needle in ("regime", "rebound outcome", "energy lost", r"$\hat\mu", "$W_r^t/W_c^t$"):
         assert any(needle in t for t in titles), needle
     # every panel carries the four boundary lines |a + b| = zeta mu, (1 + kappa) zeta mu
     regime_ax = fig.get_axes()[0]

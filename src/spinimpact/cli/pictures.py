@@ -1,20 +1,65 @@
 """``spinimpact map`` (maps over the incidence) and ``spinimpact figures`` (the
-paper's figures). Matplotlib is imported only when one of them runs."""
+paper's figures, or those of the user's own impact). Matplotlib is imported only when
+one of them runs."""
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Any
 
 import click
 
-from ._common import body_options, image_format, make_body, surface_options
+from ..model.body import PRESETS
+from ._common import image_format, make_body, surface_options
 
 __all__ = ["map_command", "figures_command"]
 
+_DPI_HELP = "Resolution of the image{}, pixels per inch."
+
+
+def _check_target(output: str) -> str:
+    """The image format of ``--output``, after checking that the file can be written:
+    done before anything is computed, so a bad path fails at once."""
+    target = Path(output)
+    parent = target.parent
+    if target.is_dir():
+        raise click.UsageError(f"--output {output!r} is a directory")
+    fmt = image_format(output)
+    if not parent.is_dir():
+        raise click.UsageError(f"--output: no such directory {str(parent)!r}")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise click.UsageError(f"--output: cannot write in the directory {str(parent)!r}")
+    return fmt
+
 
 @click.command("map")
-@body_options
+@click.option(
+    "--body",
+    type=click.Choice(list(PRESETS)),
+    default=None,
+    help="Body preset (default solid-sphere): only its zeta = 1 + R^2/rho^2 matters.",
+)
+@click.option(
+    "--mass",
+    type=float,
+    default=1.0,
+    show_default=True,
+    help="Mass m, kg. The maps are dimensionless: the mass changes nothing.",
+)
+@click.option(
+    "--radius",
+    type=float,
+    default=0.1,
+    show_default=True,
+    help="Contact radius R, m. Changes the maps only through zeta, with --gyration.",
+)
+@click.option(
+    "--gyration",
+    type=float,
+    default=None,
+    help="Radius of gyration rho, m: a custom body, zeta = 1 + R^2/rho^2.",
+)
 @surface_options
 @click.option(
     "--output", default="map.png", show_default=True, help="Image file (.png, .svg, .pdf)."
@@ -31,23 +76,44 @@ __all__ = ["map_command", "figures_command"]
     type=click.IntRange(2, 4000),
     default=600,
     show_default=True,
-    help="Grid points per axis.",
+    help="Grid points per axis, at most: never more than a panel spans pixels at --dpi "
+    "(more would add no pixel), so time and memory stay bounded by the image.",
 )
-@click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True)
+@click.option(
+    "--dpi",
+    type=click.IntRange(50, 600),
+    default=110,
+    show_default=True,
+    help=_DPI_HELP.format(" (15 x 9.2 inches)"),
+)
 def map_command(output: str, extent: float, resolution: int, dpi: int, **options: Any) -> None:
     """Maps over the incidence at a fixed body, mu and kappa: regimes, rebound
     outcomes (backward, reversed spin, vertical), energy lost, mu_hat and the
-    friction work ratio, with the regime boundaries drawn."""
-    from ..io import atomic_path
-    from ..viz.plots import plot_map
+    friction work ratio, with the regime boundaries drawn.
 
-    fmt = image_format(output)
+    The axes are vx/|vy| and R*omega/|vy|: every result is a function of these ratios,
+    zeta, mu and kappa alone, so the maps do not depend on the mass or the size.
+    """
+    from ..io import atomic_path
+    from ..viz.maps import plot_map
+
+    fmt = _check_target(output)
     o = options
     body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
-    fig = plot_map(body, mu=o["mu"], kappa=o["kappa"], extent=extent, n=resolution)
+    fig = plot_map(body, mu=o["mu"], kappa=o["kappa"], extent=extent, n=resolution, dpi=dpi)
     with atomic_path(output) as tmp:
         fig.savefig(tmp, format=fmt, dpi=dpi)
     click.echo(output)
+
+
+#: The values of the paper's figures, used for every option of ``figures`` not given.
+PAPER_CASE = {"mass": 1.0, "radius": 0.1, "vy": -1.0, "omega": 0.0, "mu": 0.25, "kappa": 0.6}
+_CASE_OPTIONS = ("body", "mass", "radius", "gyration", "vx", "vy", "omega", "mu", "kappa")
+
+
+def _case_option(name: str, help: str) -> Any:
+    default = PAPER_CASE.get(name)
+    return click.option(f"--{name}", type=float, default=default, show_default=True, help=help)
 
 
 @click.command("figures")
@@ -66,22 +132,61 @@ def map_command(output: str, extent: float, resolution: int, dpi: int, **options
     show_default=True,
     help="Image format.",
 )
-@click.option("--dpi", type=click.IntRange(50, 600), default=150, show_default=True)
-def figures_command(output: str, fmt: str, dpi: int) -> None:
-    """Regenerate the paper's Figures 2, 3, 4a, 4b, 5a, 5b and 5c.
+@click.option(
+    "--dpi",
+    type=click.IntRange(50, 600),
+    default=150,
+    show_default=True,
+    help=_DPI_HELP.format("s"),
+)
+@click.option(
+    "--body",
+    type=click.Choice(list(PRESETS)),
+    default=None,
+    help="Body preset (default solid-disk, as in the paper's figures).",
+)
+@_case_option("mass", "Mass m, kg.")
+@_case_option("radius", "Contact radius R, m.")
+@_case_option("gyration", "Radius of gyration rho, m: a custom body instead of a preset.")
+@_case_option("vx", "Incidence vx, m/s (the paper's figures: each its own).")
+@_case_option("vy", "Incidence vy < 0, m/s.")
+@_case_option("omega", "Incidence spin, rad/s, counter-clockwise positive.")
+@_case_option("mu", "Friction >= 0.")
+@_case_option("kappa", "Restitution in [0, 1].")
+@click.pass_context
+def figures_command(ctx: click.Context, output: str, fmt: str, dpi: int, **o: Any) -> None:
+    """Regenerate the paper's Figures 2, 3, 4a, 4b, 5a, 5b and 5c, or draw your own
+    impact.
 
-    Inputs: a solid disk (m = 1 kg, R = 0.1 m, no spin) at vy = -1 m/s on a
-    surface with mu = 0.25 and kappa = 0.6, and vx chosen to put each figure in
-    its regime (see spinimpact.viz.plots.PAPER_FIGURES). Each file is written to a
-    temporary name and renamed when complete.
+    \b
+    With none of the body, incidence or surface options: the paper's figures, for a
+    solid disk (m = 1 kg, R = 0.1 m, no spin) at vy = -1 m/s on a surface with
+    mu = 0.25 and kappa = 0.6, vx chosen to put each figure in its regime (see
+    spinimpact.viz.plots.PAPER_FIGURES): fig2.png ... fig5c.png.
+    With any of them: history, routh and energy (.png, ...) of that one impact, the
+    options not given taking the values above (vx = 1 m/s).
+
+    Each file is written to a temporary name and renamed when complete.
     """
-    from ..io import atomic_path
-    from ..viz.plots import PAPER_FIGURES, paper_figure
+    from click.core import ParameterSource
 
+    from ..io import atomic_path
+    from ..viz.plots import PAPER_FIGURES, impact_figures, paper_figure
+
+    own = [n for n in _CASE_OPTIONS if ctx.get_parameter_source(n) != ParameterSource.DEFAULT]
+    figures: Any = ((name, None) for name in PAPER_FIGURES)
+    if own:  # the user's own impact: solved (and checked) before anything is written
+        from ..model.impact import solve
+
+        preset = o["body"] or ("solid-disk" if o["gyration"] is None else None)
+        body = make_body(preset, o["mass"], o["radius"], o["gyration"])
+        vx = 1.0 if o["vx"] is None else o["vx"]
+        imp = solve(body, vx, o["vy"], o["omega"], mu=o["mu"], kappa=o["kappa"])
+        figures = impact_figures(imp).items()
     folder = Path(output)
     folder.mkdir(parents=True, exist_ok=True)
-    for name in PAPER_FIGURES:
+    for name, fig in figures:
         target = folder / f"{name}.{fmt}"
         with atomic_path(target) as tmp:
-            paper_figure(name).savefig(tmp, format=fmt, dpi=dpi)
+            (fig or paper_figure(name)).savefig(tmp, format=fmt, dpi=dpi)
         click.echo(str(target))
