@@ -31,6 +31,7 @@ __all__ = ["sphere_command", "pair_command", "surface_frame", "incidence", "spin
 SPHERES = ("solid-sphere", "spherical-shell")
 _UP = (0.0, 1.0, 0.0)
 _DEFAULT = click.core.ParameterSource.DEFAULT
+_KEYS = {"json": "as_json", "plot": "plot", "html": "html_path"}
 
 
 class _Vector(click.ParamType):
@@ -128,9 +129,7 @@ def _one_of(ctx: click.Context, vector: str, alternative: tuple[str, ...]) -> bo
     """Whether the alternative inputs are used (and not together with the vector)."""
     typed = _given(ctx, *alternative)
     if typed and _given(ctx, vector):
-        raise click.UsageError(
-            f"give either --{vector} or {typed[0]} (and its companions), not both"
-        )
+        raise click.UsageError(f"give either --{vector} or {typed[0]} (and its companions)")
     return bool(typed)
 
 
@@ -166,8 +165,11 @@ def _body(o: dict, k: str = "") -> Body:
     return Body.preset(name or SPHERES[0], mass=o[f"mass{k}"], radius=o[f"radius{k}"])
 
 
-def _check_targets(plot: str | None, html_path: str | None) -> None:
+def _check_targets(o: dict) -> None:
     """Check ``--plot`` and ``--html`` before anything is solved or printed."""
+    if o["output"] is not None:
+        raise click.UsageError("--output goes with --batch (the file a batch run writes)")
+    plot, html_path = o["plot"], o["html_path"]
     _ = plot is None or image_format(plot, "--plot")
     if html_path is not None and Path(html_path).suffix.lower() not in (".html", ".htm"):
         raise click.UsageError(f"--html must end in .html or .htm, got {html_path!r}")
@@ -186,10 +188,9 @@ def print_sphere_report(imp: SphereImpact | PairImpact) -> None:
     from ..viz.sphere import headline, sphere_tables
 
     console = Console(highlight=False, soft_wrap=True)
-    if isinstance(imp, PairImpact):
-        title = f"Two spheres: {imp.ball1.name} on {imp.ball2.name}"
-    else:
-        title = f"Sphere on a surface, in 3D: {imp.body.name}"
+    pair = isinstance(imp, PairImpact)
+    title = f"Two spheres: {imp.ball1.name} on {imp.ball2.name}" if pair else (
+        f"Sphere on a surface, in 3D: {imp.body.name}")  # fmt: skip
     console.print(Text(title, style="bold"))
     console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), "   ", headline(imp)))
     for table in sphere_tables(imp):
@@ -229,7 +230,7 @@ def _batch(ctx: click.Context, pair: bool, o: dict, single: tuple[str, ...]) -> 
 
     if o["output"] is None:
         raise click.UsageError("--batch needs --output (a .csv or .parquet file)")
-    typed = _given(ctx, *single)
+    typed = _given(ctx, *single) + [f"--{n}" for n in ("json", "plot", "html") if o[_KEYS[n]]]
     if typed:
         raise click.UsageError(
             f"{typed[0]} describes one impact; with --batch each row of the file gives its own"
@@ -331,7 +332,7 @@ def sphere_command(ctx: click.Context, **o: Any) -> None:
     """
     if o["batch"] is not None:
         return _batch(ctx, False, o, _SPHERE_SINGLE)
-    _check_targets(o["plot"], o["html_path"])
+    _check_targets(o)
     body = _body(o)
     v, w = _state(ctx, o, "", o["normal"], o["surface_velocity"])
     surface = Surface(normal=o["normal"], velocity=o["surface_velocity"])
@@ -382,7 +383,7 @@ def pair_command(ctx: click.Context, **o: Any) -> None:
     """
     if o["batch"] is not None:
         return _batch(ctx, True, o, _PAIR_SINGLE)
-    _check_targets(o["plot"], o["html_path"])
+    _check_targets(o)
     centres = (o["centre1"], o["centre2"])
     if (centres[0] is None) != (centres[1] is None):
         raise click.UsageError("--centre1 and --centre2 go together")
