@@ -12,8 +12,6 @@ no traceback (:func:`~spinimpact.cli._common.errors_to_exit_2`).
 
 from __future__ import annotations
 
-from typing import Any
-
 import click
 import numpy as np
 
@@ -54,11 +52,6 @@ for _command in (
     cli.add_command(_command)
 
 
-def _terminate(signum: int, _frame: Any) -> None:
-    """SIGTERM: unwind normally so temporary files are removed."""
-    raise SystemExit(128 + signum)
-
-
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``spinimpact`` command.
 
@@ -70,16 +63,22 @@ def main(argv: list[str] | None = None) -> None:
     Notes
     -----
     Exits with status 0 on success, 2 on bad input (one line on stderr, see
-    :func:`~spinimpact.cli._common.errors_to_exit_2`), 130 on Ctrl-C and
-    128 + 15 on SIGTERM, after removing any temporary file. Floating-point
-    overflow, division by zero and invalid operations raise instead of
-    producing ``inf`` or ``NaN`` in a report.
+    :func:`~spinimpact.cli._common.errors_to_exit_2`), 130 on Ctrl-C (SIGINT) and
+    128 + 15 on SIGTERM. Output files are renamed into place only when the whole
+    command, its standard output included, succeeded
+    (:func:`~spinimpact.io.atomic.atomic_outputs`): a run that fails or is stopped
+    leaves every old output as it was and no temporary file. A signal is recorded,
+    and the run stops where stopping is safe (:mod:`spinimpact.io._stop`).
+    Floating-point overflow, division by zero and invalid operations raise instead
+    of producing ``inf`` or ``NaN`` in a report.
     """
-    import signal
+    import sys
 
-    if hasattr(signal, "SIGTERM"):
-        signal.signal(signal.SIGTERM, _terminate)
-    with errors_to_exit_2():
+    from ..io._stop import stop_on_signals
+    from ..io.atomic import atomic_outputs
+
+    with stop_on_signals(), errors_to_exit_2():
         # Any floating-point trouble becomes a clean error rather than inf/NaN in a report.
-        with np.errstate(over="raise", divide="raise", invalid="raise"):
+        with np.errstate(over="raise", divide="raise", invalid="raise"), atomic_outputs():
             cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)
+            sys.stdout.flush()  # a full standard output fails the run before any rename

@@ -234,14 +234,23 @@ def errors_to_exit_2() -> Iterator[None]:
       optional package (``ImportError``, whose message names the extra to
       install) and a file that cannot be read or written (``OSError``) print
       ``spinimpact: error: MESSAGE`` and exit with status 2, without a traceback;
-    * Ctrl-C prints ``spinimpact: aborted`` and exits with status 130.
+    * a stop by a signal (:class:`~spinimpact.io._stop.Stopped`: Ctrl-C, SIGTERM)
+      prints which and exits with status 128 + its number (130 for SIGINT, 143 for
+      SIGTERM); Click's own abort prints ``spinimpact: aborted`` and exits with 130.
 
     Anything else is a bug and keeps its traceback.
     """
     import csv
+    import signal
+
+    from ..io._stop import Stopped
 
     try:
         yield
+    except Stopped as exc:
+        name = signal.Signals(exc.signum).name
+        click.echo(f"spinimpact: stopped by {name}; no output was changed", err=True)
+        sys.exit(128 + exc.signum)
     except click.exceptions.NoArgsIsHelpError as exc:
         click.echo(exc.ctx.get_help() if exc.ctx else "")
         sys.exit(0)

@@ -32,9 +32,19 @@ def _given(ctx: click.Context, name: str) -> bool:
 
 
 @click.command("batch")
-@click.argument("source", type=click.Path(dir_okay=False))
+@click.argument("source", type=click.Path(dir_okay=False, allow_dash=True))
 @click.option(
-    "--output", required=True, help="Output file: .csv, or .parquet with the [parquet] extra."
+    "--output",
+    required=True,
+    help="Output file: .csv, or .parquet with the [parquet] extra; - writes CSV to "
+    "standard output.",
+)
+@click.option(
+    "--fields",
+    default=None,
+    metavar="A,B,...",
+    help="Result columns to write after the input columns, in this order (default: all). "
+    "A wrong name gives the list of valid ones.",
 )
 @body_options
 @surface_options
@@ -62,9 +72,16 @@ def _given(ctx: click.Context, name: str) -> bool:
 )
 @click.pass_context
 def batch_command(
-    ctx: click.Context, source: str, output: str, on_error: str, chunk_size: int, **options: Any
+    ctx: click.Context,
+    source: str,
+    output: str,
+    fields: str | None,
+    on_error: str,
+    chunk_size: int,
+    **options: Any,
 ) -> None:
-    """Solve every row of SOURCE (CSV or Parquet); its columns say what it holds.
+    """Solve every row of SOURCE (CSV or Parquet; - reads CSV from standard input); its
+    columns say what it holds.
 
     \b
     The paper's bodies: vx, vy, omega, and optionally mu, kappa, mass, radius,
@@ -75,11 +92,12 @@ def batch_command(
       contact point from the pivot, m), optionally mu, kappa, law.
 
     Writes the input columns plus every result field that is not an input (for planar
-    files also the law, mu and kappa used where the file lacks them); Parquet fields
-    carry their units.
+    files also the law, mu and kappa used where the file lacks them), or those --fields
+    names; Parquet fields carry their units. An output file is replaced only when the
+    whole run succeeded; a stop (Ctrl-C, SIGTERM) leaves it as it was.
     """
     from .._validation import validated
-    from ..io.batch import input_kind, run_batch
+    from ..io.batch import FieldError, run_batch
 
     o = options
     if o["gyration"] is not None and o["body"] is not None:
@@ -93,8 +111,9 @@ def batch_command(
                 raise click.UsageError(f"--{exc}") from None
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
     defaults["law"] = o["law"]
-    if Path(source).is_file():
-        kind = input_kind(source)
+    chosen = None if fields is None else [f for f in fields.split(",") if f.strip()]
+
+    def check_kind(kind: str) -> None:
         given = [f"--{n}" for n in _PAPER_OPTIONS if _given(ctx, n)]
         if kind != "paper" and given:
             what = "free planar bodies" if kind == "planar" else "pendulums"
@@ -105,13 +124,19 @@ def batch_command(
 
     with progress() as bar:
         task = bar.add_task(f"solving {Path(source).name}", total=None)
-        summary = run_batch(
-            source,
-            output,
-            defaults=defaults,
-            on_error=on_error,
-            chunk_size=chunk_size,
-            progress=lambda done, total: bar.update(task, completed=done, total=total),
-        )
+        try:
+            summary = run_batch(
+                source,
+                output,
+                defaults=defaults,
+                on_error=on_error,
+                chunk_size=chunk_size,
+                progress=lambda done, total: bar.update(task, completed=done, total=total),
+                fields=chosen,
+                check_kind=check_kind,
+            )
+        except FieldError as exc:
+            raise click.UsageError(f"--fields: {exc}") from None
     note = f" ({summary.skipped} with errors: see the 'error' column)" if summary.skipped else ""
-    click.echo(f"wrote {summary.rows} rows to {summary.output}{note}")
+    # With --output -, standard output holds the rows: the summary goes to stderr.
+    click.echo(f"wrote {summary.rows} rows to {summary.output}{note}", err=output == "-")

@@ -10,7 +10,11 @@ the row, line and column of each bad cell.
 
 from __future__ import annotations
 
+import contextlib
 import csv
+import io
+import re
+import sys
 from collections.abc import Callable, Collection, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -90,7 +94,8 @@ def csv_chunks(
     Parameters
     ----------
     path : pathlib.Path
-        A UTF-8 CSV file (a byte-order mark is allowed) with a header line.
+        A UTF-8 CSV file (a byte-order mark is allowed) with a header line; ``-`` is
+        standard input.
     chunk_size : int
         Rows per chunk.
     skip : bool
@@ -113,7 +118,7 @@ def csv_chunks(
             size += len(line)
             yield line
 
-    with open(path, newline="", encoding="utf-8-sig") as f:
+    with _text_input(path) as f:
         reader = csv.reader(lines(f))
         try:
             header = [h.strip() for h in next(reader)]
@@ -144,13 +149,44 @@ def csv_chunks(
             if not rows:
                 advance(size)
                 return
-            cells = np.array(rows, dtype=str).reshape(len(rows), len(header))
-            columns = {h: cells[:, j] for j, h in enumerate(header)}
-            empty = {h: np.char.strip(c) == "" for h, c in columns.items()}
-            columns = {h: np.char.strip(c) for h, c in columns.items()}
+            columns = _text_columns(header, rows)
+            empty = {h: c == "" for h, c in columns.items()}
             advance(size)
             yield Chunk(first, columns, empty, np.array(numbers), np.array(problems, dtype=object))
             first += len(rows)
+
+
+@contextlib.contextmanager
+def _text_input(path: Path) -> Iterator[Any]:
+    """``path`` opened as UTF-8 text for the csv module; ``-``: standard input, left open."""
+    if str(path) != "-":
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            yield f
+        return
+    buffer = getattr(sys.stdin, "buffer", None)
+    if buffer is None:  # a text stream that is not a file (tests, embedding)
+        yield sys.stdin
+        return
+    f = io.TextIOWrapper(buffer, encoding="utf-8-sig", newline="")
+    try:
+        yield f
+    finally:
+        f.detach()
+
+
+def _text_columns(header: list[str], rows: list[list[str]]) -> dict[str, np.ndarray]:
+    """The rows' stripped cells by column, as arrays of Python strings.
+
+    Object arrays hold each cell at its own length; a fixed-width ``str`` array would
+    give every cell the longest cell's width (one 10,000-character cell in 100,000
+    rows: 4 GB), and would drop a trailing NUL character.
+    """
+    columns = {}
+    for name, cells in zip(header, zip(*rows, strict=True), strict=True):
+        column = np.empty(len(rows), dtype=object)
+        column[:] = [c.strip() for c in cells]
+        columns[name] = column
+    return columns
 
 
 def parquet_chunks(
@@ -261,16 +297,7 @@ def chunk_numbers(
             note(i, f"{chunk.where(i, name)}: a true/false value is not a number")
         values = np.full(cells.shape, np.nan)
     else:
-        text = cells.astype(str)
-        values = np.full(text.shape, np.nan)
-        try:
-            values[~empty] = text[~empty].astype(np.float64)
-        except ValueError:
-            for i in np.flatnonzero(~empty):
-                try:
-                    values[i] = float(text[i])
-                except ValueError:
-                    note(i, f"{chunk.where(i, name)}: {str(text[i])!r} is not a number")
+        values = _plain_numbers(chunk, name, cells, empty, note)
     if default is not None:
         values[empty] = default
     elif required:
@@ -280,4 +307,38 @@ def chunk_numbers(
     check = (found != "") & ~(empty & np.isnan(values))
     for i in np.flatnonzero(check):
         note(i, f"{chunk.where(i, name)}: {found[i]}")
+    return values
+
+
+#: A plain number: ASCII digits with an optional sign, point and exponent, or inf/nan
+#: (reported by the column's rules). Python's ``float`` also reads ``1_000``, Arabic-Indic
+#: and other Unicode digits; a CSV cell holding them is refused rather than reinterpreted.
+_PLAIN = re.compile(
+    r"[+-]?(?:(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?|inf(?:inity)?|nan)",
+    re.IGNORECASE,
+)
+_SHOWN = 40  # characters of a bad cell quoted in a message
+
+
+def _plain_numbers(
+    chunk: Chunk,
+    name: str,
+    cells: np.ndarray,
+    empty: np.ndarray,
+    note: Callable[[int, str], None],
+) -> np.ndarray:
+    """Text cells as float64, NaN where empty; each cell that is not a plain number noted."""
+    values = np.full(cells.shape, np.nan)
+    given = np.flatnonzero(~empty)
+    text = [(c if isinstance(c, str) else str(c)).strip() for c in cells[given].tolist()]
+    if all(map(_PLAIN.fullmatch, text)):
+        values[given] = np.fromiter(map(float, text), np.float64, count=len(text))
+        return values
+    for i, cell in zip(given.tolist(), text, strict=True):
+        if _PLAIN.fullmatch(cell):
+            values[i] = float(cell)
+            continue
+        shown = repr(cell if len(cell) <= _SHOWN else cell[:_SHOWN] + "...")
+        more = f" ({len(cell)} characters)" if len(cell) > _SHOWN else ""
+        note(i, f"{chunk.where(i, name)}: {shown}{more} is not a number")
     return values

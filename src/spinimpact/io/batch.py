@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import functools
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -30,7 +30,8 @@ import numpy as np
 from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import Impact, solve
-from ._sinks import ArrowRows, CsvRows
+from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
+from ._stop import check as stop_check
 from ._tables import (
     SUFFIXES,
     BatchError,
@@ -41,7 +42,6 @@ from ._tables import (
     file_format,
     parquet_chunks,
 )
-from .atomic import atomic_path
 from .planar_batch import PlanarBatch, body_kind
 
 __all__ = [
@@ -51,6 +51,7 @@ __all__ = [
     "SUFFIXES",
     "BatchError",
     "BatchSummary",
+    "FieldError",
     "body_kind",
     "input_kind",
     "result_columns",
@@ -200,6 +201,8 @@ def _have_pyarrow() -> bool:
 
 
 def _input_format(source: Path) -> str:
+    if str(source) == STDIO:
+        return "csv"
     if not source.is_file():
         raise ValueError(f"input file {str(source)!r} does not exist or is not a file")
     return file_format(source, "input")
@@ -244,7 +247,9 @@ def run_batch(
     defaults: dict[str, Any],
     on_error: str = "stop",
     chunk_size: int = 100_000,
-    progress: Callable[[int, int], None] | None = None,
+    progress: Callable[[int, int | None], None] | None = None,
+    fields: Sequence[str] | None = None,
+    check_kind: Callable[[str], None] | None = None,
 ) -> BatchSummary:
     """Solve every row of ``source`` and write ``output`` (CSV, or Parquet by suffix).
 
@@ -256,13 +261,15 @@ def run_batch(
     Parameters
     ----------
     source : str or os.PathLike
-        Input file, ``.csv``, ``.parquet`` or ``.pq``, with columns ``vx, vy``
+        Input file, ``.csv``, ``.parquet`` or ``.pq`` (``"-"``: CSV from standard
+        input), with columns ``vx, vy``
         (m/s) and ``omega`` (rad/s), and optionally ``mu, kappa`` (1), ``mass``
         (kg), ``radius, gyration`` (m) and ``body`` (a preset name). Planar bodies:
         ``mass, inertia, rx, ry, vx, vy, omega``; pendulums: ``mass, inertia, gx, gy,
         px, py, omega``; both optionally ``mu, kappa, law``.
     output : str or os.PathLike
-        Output file, ``.csv``, ``.parquet`` or ``.pq``: the input columns, then
+        Output file, ``.csv``, ``.parquet`` or ``.pq`` (``"-"``: CSV on standard
+        output, rows streamed as they are solved): the input columns, then
         :data:`RESULT_COLUMNS` (SI units, as the :class:`~spinimpact.Impact` fields), or
         for planar files :attr:`PlanarBatch.kinds <spinimpact.io.planar_batch.PlanarBatch>`'s
         columns. Parquet fields name their units in their metadata.
@@ -279,7 +286,15 @@ def run_batch(
         Rows solved at a time; memory is bounded by it.
     progress : callable, optional
         Called after each chunk as ``progress(done, total)``: characters (CSV)
-        or rows (Parquet).
+        or rows (Parquet); ``total`` is ``None`` for standard input.
+    fields : sequence of str, optional
+        The result columns to write after the input columns, in this order; by default
+        all of them. Names from the file's result vocabulary (:func:`result_columns`
+        for the paper's bodies, :class:`~spinimpact.io.planar_batch.PlanarBatch`'s
+        ``kinds`` for planar bodies and pendulums).
+    check_kind : callable, optional
+        Called with the file's kind (:func:`body_kind`) once its header is read, before
+        anything is written; it may raise to refuse the file.
 
     Returns
     -------
@@ -293,6 +308,9 @@ def run_batch(
     ValueError
         For a bad ``on_error`` or ``chunk_size``, a missing input, an unknown suffix,
         or an output that is the input.
+    FieldError
+        A ``ValueError`` for an unknown name in ``fields`` (the message lists the valid
+        ones).
     TypeError
         For a ``chunk_size`` that is not an integer.
     ImportError
@@ -314,13 +332,15 @@ def run_batch(
         raise TypeError(f"chunk_size must be a positive integer, got {chunk_size!r}")
     if chunk_size < 1:
         raise ValueError(f"chunk_size must be a positive integer, got {chunk_size!r}")
-    fmt_in, fmt_out = _input_format(source), file_format(output, "output")
-    if output.exists() and output.resolve() == source.resolve():
+    to_stdout = str(output) == STDIO
+    fmt_in = _input_format(source)
+    fmt_out = "csv" if to_stdout else file_format(output, "output")
+    if not to_stdout and output.exists() and output.resolve() == source.resolve():
         raise ValueError("the output file must differ from the input file")
     if "parquet" in (fmt_in, fmt_out):
         require("pyarrow.parquet", "Parquet files")
     skip = on_error == "skip"
-    total = source.stat().st_size
+    total: int | None = None if str(source) == STDIO else source.stat().st_size
     if fmt_in == "parquet":
         total = require("pyarrow.parquet", "Parquet files").ParquetFile(source).metadata.num_rows
 
@@ -332,6 +352,8 @@ def run_batch(
     chunks = read(source, int(chunk_size), skip, advance)
     header = next(chunks)
     kind = body_kind(header)
+    if check_kind is not None:
+        check_kind(kind)
     if kind == "paper":
         check_header(header, skip, RESULT_COLUMNS, REQUIRED)
         kinds, numeric = column_kinds(), NUMERIC
@@ -339,21 +361,26 @@ def run_batch(
     else:
         plan = PlanarBatch(kind, header, skip, defaults)
         kinds, numeric, solve_chunk = plan.kinds, plan.numeric, plan.solve
+    if fields is not None:
+        kinds = chosen_fields(kinds, fields, kind)
     rows = skipped = 0
-    with atomic_path(output) as tmp:
+    with output_target(output) as target:
         if fmt_out == "parquet" or _have_pyarrow():
-            sink: ArrowRows | CsvRows = ArrowRows(tmp, header, kinds, skip, fmt_out, numeric)
+            sink: ArrowRows | CsvRows = ArrowRows(target, header, kinds, skip, fmt_out, numeric)
         else:
-            sink = CsvRows(tmp, header, kinds, skip)
+            sink = CsvRows(target, header, kinds, skip)
+        complete = False
         try:
             for chunk in chunks:
+                stop_check()  # a signal stops the run here, between chunks
                 values, results, messages = solve_chunk(chunk)
                 bad = messages != ""
                 if bad.any() and not skip:
                     raise BatchError(messages[int(np.argmax(bad))])
-                sink.write(chunk, values, results, messages)
+                sink.write(chunk, values, {n: results[n] for n in kinds}, messages)
                 rows += messages.size
                 skipped += int(bad.sum())
+            complete = True
         finally:
-            sink.close()
+            sink.close(complete)
     return BatchSummary(rows=rows, skipped=skipped, output=output, kind=kind)

@@ -273,7 +273,8 @@ class PlanarBatch:
         law = np.full(chunk.messages.size, self.defaults["law"], dtype=object)
         if "law" in chunk.columns:
             cells = chunk.columns["law"]
-            text = np.char.lower(np.char.strip(cells.astype(str))).astype(object)
+            text = np.empty(cells.size, dtype=object)  # cell by cell: no fixed-width copy
+            text[:] = [("" if c is None else str(c)).strip().lower() for c in cells.tolist()]
             given = ~chunk.empty["law"] & (text != "")  # a blank Parquet string is empty too
             law[given] = text[given]
             for i in np.flatnonzero(given & ~np.isin(law, LAWS)):
