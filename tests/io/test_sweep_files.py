@@ -29,6 +29,7 @@ def test_parquet_names_the_regimes_in_a_dictionary_column(tmp_path):
     assert json.loads(table.schema.metadata[b"axes"])["vx"] == {
         "kind": "grid", "lo": -5.0, "hi": 5.0, "num": 61
     }  # fmt: skip
+    assert json.loads(table.schema.metadata[b"axes"])["vy"] == {"kind": "fixed", "value": -4.0}
 
 
 def test_npy_directory_names_the_regimes_units_and_body(tmp_path):

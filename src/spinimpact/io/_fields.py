@@ -168,7 +168,7 @@ def output_kind(output: str | os.PathLike[str]) -> str:
     if text.endswith(("/", os.sep)) or not suffix:
         return "npy"
     raise ValueError(
-        f"--output {text!r}: a sweep writes FILE.parquet, FILE.csv or a new directory of .npy "
+        f"output {text!r}: a sweep writes FILE.parquet, FILE.csv or a new directory of .npy "
         f"files (a name without a suffix, or ending in '/'), not a {suffix} file"
     )
 

@@ -11,9 +11,10 @@ histograms on the fly, locally or on Dask.
 Each chunk is solved by :func:`~spinimpact.solve_planar` (or
 :func:`~spinimpact.solve_pendulum`) at once, so the fields are the
 :class:`~spinimpact.PlanarImpact` columns of the same names (:func:`planar_fields`), the
-very numbers the function gives. ``regime`` is stored as its index into
-:data:`~spinimpact.core.planar.PLANAR_REGIMES` (a Parquet file lists the names in its
-metadata, with the body and the law); ``creates_energy`` as a flag.
+very numbers the function gives. ``regime`` is computed as its index into
+:data:`~spinimpact.core.planar.PLANAR_REGIMES` and written as names (a dictionary column
+in Parquet, text in CSV; in ``.npy`` files the index, the names in ``metadata.json``,
+with the body and the law); ``creates_energy`` as a flag.
 """
 
 from __future__ import annotations

@@ -10,9 +10,16 @@ the same numbers.
 
 The fields (:data:`FIELDS`) are named as the columns of
 :class:`~spinimpact.Impact` and hold the same numbers (computed by the same
-core kernels, without building the whole result); ``regime`` is stored as its
+core kernels, without building the whole result); ``regime`` is computed as its
 integer code, ``spinimpact.core.REGIMES[code]`` being the Impact's text. Older
-names stay accepted (:data:`ALIASES`).
+names stay accepted (:data:`ALIASES`). Files name the regimes: a dictionary column
+of names in Parquet, names in CSV, and in a directory of ``.npy`` files the codes in
+``regime.npy`` with the names in ``metadata.json`` (:mod:`spinimpact.io._fields`).
+
+Before computing, :func:`run_sweep` weighs a trial chunk (:func:`estimate_sweep`) and
+refuses a sweep whose chunk would not fit in the memory available or whose output
+would not fit on its disk; grid chunks compute their own points, so memory does not
+grow with the length of an axis.
 
 Random samples depend on the seed alone: each uniform input draws from its own
 stream (:class:`numpy.random.PCG64` seeded with ``[seed, index of the input in
@@ -23,8 +30,8 @@ longer sweep are those of a sweep of ``n``.
 A planar body or a pendulum is swept by
 :class:`~spinimpact.io.planar_sweep.PlanarSweep`, a :class:`Sweep` with its own
 inputs, fields and regimes (:attr:`Sweep.inputs`, :meth:`Sweep.field_name`,
-:attr:`Sweep.regimes`), run by the same :func:`run_sweep`. A Parquet output names
-the regimes its codes stand for and the body in its metadata, and each column's unit.
+:attr:`Sweep.regimes`), run by the same :func:`run_sweep`. Every output describes the
+sweep (:meth:`Sweep.description`: regimes, body, axes, seed) and each column's unit.
 """
 
 from __future__ import annotations
@@ -188,9 +195,10 @@ class Sweep:
     def description(self) -> dict[str, Any]:
         """What a file of the sweep says about itself: the regimes' names (the ``regime``
         codes index them), the body, the axes (SI units), the samples and the seed."""
-        axes = {n: {"kind": a.kind, "lo": a.lo} | ({"hi": a.hi} if a.kind != "fixed" else {})
-                | ({"num": a.num} if a.kind == "grid" else {})
-                for n, a in self.axes.items()}  # fmt: skip
+        axes = {}
+        for n, a in self.axes.items():
+            ends = {"lo": a.lo, "hi": a.hi} | ({"num": a.num} if a.kind == "grid" else {})
+            axes[n] = {"kind": a.kind} | ({"value": a.lo} if a.kind == "fixed" else ends)
         random = {"samples": self.samples, "seed": self.seed} if self.random else {}
         return {"regimes": list(self.regimes), "body": self.body.to_dict(), "axes": axes} | random
 
