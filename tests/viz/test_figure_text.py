@@ -149,12 +149,13 @@ def test_maps_are_typeset_and_clear(mu, kappa):
     assert _problems(fig) == []
 
 
-def test_simulation_figure_is_typeset():
+def test_simulation_figure_is_typeset_and_clear():
     from spinimpact.dynamics import LinearContact, simulate
 
     sim = simulate(SPHERE, 3.0, -4.0, 10.0, mu=0.2, contact=LinearContact(1e6, 0.0))
     fig = plots.plot_simulation(sim)
     assert _untypeset(fig) == []
+    assert _problems(fig) == []
 
 
 def test_the_checks_find_what_they_look_for():

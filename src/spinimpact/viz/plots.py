@@ -217,8 +217,8 @@ def plot_simulation(sim) -> Figure:
         if sim.stick_time == sim.stick_time:
             ax.axvline(sim.stick_time * 1e3, color="0.45", ls="--", lw=0.9, label="stick")
         ax.set_ylabel(label)
-        if len(group) > 1:
-            ax.legend(loc="best", fontsize="small")
+        if len(group) > 1:  # above the axes, where no curve runs
+            ax.legend(loc="lower left", bbox_to_anchor=(0, 1.01), ncol=3, fontsize="small")
     for ax in axes[1]:
         ax.set_xlabel("time (ms)")
     fig.suptitle(
