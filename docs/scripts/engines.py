@@ -20,8 +20,10 @@ from spinimpact.io import atomic_path
 def main(output: str) -> None:
     ball = Body.solid_sphere(mass=1.0, radius=0.1)
     cases = E.standard_cases()
-    fig = Figure(figsize=(12, 5.0), layout="constrained")
-    left, right = fig.subplots(1, 2)
+    fig = Figure(figsize=(14, 6.4), layout="constrained")
+    # one subfigure per panel, each with its legend below it, where no curve runs
+    subs = fig.subfigures(1, 2, width_ratios=[1.5, 1], wspace=0.02)
+    left, right = (sub.subplots() for sub in subs)
     for label, engine, settings in E.CONFIGURATIONS:
         run = E.bounce(engine, ball, **cases, **settings)
         err = np.sort(run.error)
@@ -30,23 +32,26 @@ def main(output: str) -> None:
         left.step(err, np.arange(1, err.size + 1) / err.size, where="post", label=label)
     left.set_xscale("log")
     left.set_xlim(1e-4, 1.5)
-    left.set_xlabel("largest error of vx+, vy+, R omega+, over max(|vx|, |vy|, R|omega|) before")
-    left.set_ylabel("fraction of the 1152 impacts")
+    left.set_xlabel(
+        r"largest error of $v_x^+$, $v_y^+$, $R\omega^+$, relative to "
+        r"$\max(|v_x^-|, |v_y^-|, R|\omega^-|)$"
+    )
+    left.set_ylabel(f"fraction of the {err.size} impacts")
     left.set_title("Error against the exact rigid-body answer")
     left.grid(alpha=0.3)
-    fig.legend(*left.get_legend_handles_labels(), loc="outside lower center", ncol=3, fontsize=8)
+    subs[0].legend(loc="outside lower center", ncol=2, fontsize=9.5)
 
     phase = np.linspace(0.0, 1.0, 201, endpoint=False)
     for vy in (-1.0, -3.0):
         for kappa in (0.5, 0.8):
             run = E.bounce("pybullet", ball, 0.0, vy, 0.0, mu=0.3, kappa=kappa, phase=phase)
-            right.plot(phase, run.vy / -vy, label=f"vy = {vy:g} m/s, kappa = {kappa}")
+            right.plot(phase, run.vy / -vy, label=rf"$v_y^-$ = {vy:g} m/s, $\kappa$ = {kappa}")
             right.axhline(kappa, color="0.6", lw=0.8, ls="--")
-    right.set_xlabel("contact phase (where in the 1/240 s step the sphere meets the plane)")
-    right.set_ylabel("PyBullet's vy+ / |vy-|  (dashed: kappa)")
-    right.set_title("PyBullet at its defaults, head-on: bounce against phase")
+    right.set_xlabel("contact phase: where in its 1/240 s step the sphere meets the plane")
+    right.set_ylabel(r"PyBullet's $v_y^+/|v_y^-|$ (dashed: $\kappa$)")
+    right.set_title("PyBullet at its defaults, head-on: rebound against phase")
     right.grid(alpha=0.3)
-    right.legend(fontsize=7, loc="center", bbox_to_anchor=(0.58, 0.69))
+    subs[1].legend(loc="outside lower center", ncol=2, fontsize=10)
     with atomic_path(output) as tmp:
         fig.savefig(tmp, dpi=80, format="png")
 
