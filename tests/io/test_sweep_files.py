@@ -102,3 +102,24 @@ def test_estimate_scales_trial_chunks():
     assert 0 < cost.seconds < 3600 and cost.output_bytes == 0 and cost.problems() == []
     assert 1e6 < cost.chunk_memory < 1e9  # tens of bytes a point
     assert str(cost).startswith("10,011,001 points in 51 chunks: about ")
+
+
+@pytest.mark.parametrize("name", ["s.parquet", "s.csv", "d"])
+def test_a_signal_stops_a_sweep_at_its_next_chunk_and_leaves_nothing(tmp_path, name):
+    import os
+    import signal
+
+    from spinimpact.io import _stop
+
+    pytest.importorskip("pyarrow.csv", reason="the [parquet] extra is not installed")
+    done = []
+
+    def progress(k, total):  # SIGTERM arrives while the first chunk is being written
+        done.append(k)
+        if k == 1:
+            os.kill(os.getpid(), signal.SIGTERM)
+
+    with _stop.stop_on_signals(), pytest.raises(_stop.Stopped):
+        run_sweep(make(chunk_size=100), output=tmp_path / name, progress=progress)
+    assert done == [1]  # not the 26 chunks of the sweep
+    assert list(tmp_path.iterdir()) == []

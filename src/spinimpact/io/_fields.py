@@ -28,6 +28,7 @@ import numpy as np
 from .. import core
 from .._validation import require
 from ..core import fused
+from . import _stop
 from ._sinks import ArrowWriter
 from ._units import UNITS, unit_metadata
 from .atomic import atomic_path
@@ -206,7 +207,9 @@ class TableColumns:
         return pa.Table.from_arrays(arrays, schema=pa.schema(fields, self.metadata))
 
     def write(self, data: dict[str, np.ndarray]) -> None:
-        """Append one chunk's columns."""
+        """Append one chunk's columns; first stop if a signal asked to
+        (:func:`spinimpact.io._stop.check`: a sweep stops between chunks)."""
+        _stop.check()
         self.writer.write(self.table(data))
 
     def close(self) -> None:
