@@ -108,3 +108,17 @@ def test_html_sets_the_scripts_of_its_symbols():
         Body(mass=1.0, radius=0.1, gyration=0.05, name=name), 3.0, -4.0, 1.0, mu=0.2, kappa=0.8
     )
     assert f"<td>{name}</td>" in impact_report_html(named)
+
+
+def test_planar_report_says_smooth_without_friction():
+    import math
+
+    from spinimpact import PlanarBody, solve_planar
+    from spinimpact.viz.report import print_planar_report
+
+    rod = PlanarBody.rod(mass=1.0, length=1.0, angle=math.radians(45))
+    for mu, words in ((0.0, "on a smooth surface (mu = 0)"), (0.3, "on a rough surface")):
+        out = io.StringIO()
+        imp = solve_planar(rod, 1.0, -1.0, 0.0, mu=mu, kappa=0.8, law="poisson")
+        print_planar_report(imp, console=Console(file=out, width=200))
+        assert words in out.getvalue()
