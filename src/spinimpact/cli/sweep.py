@@ -5,7 +5,8 @@ for one planar body (``rod``, ``block``, ``eccentric-disk``: the geometry option
 ``spinimpact planar``; ``custom``: ``--inertia, --rx, --ry``) or a rod ``pendulum`` on a
 pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``
 (:class:`~spinimpact.io.planar_sweep.PlanarSweep`). The fields are then the
-:class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones.
+:class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones. With
+``--sphere``, one sphere in 3D (:mod:`~spinimpact.cli._sphere_sweep`).
 
 Before computing, a trial chunk estimates the time, the memory of a chunk and the size
 of the output (:func:`~spinimpact.io.sweep.estimate_sweep`); a sweep whose chunk does
@@ -23,6 +24,7 @@ import click
 
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
+from ._sphere_sweep import SPHERE_ONLY, sphere_options, sphere_sweep
 
 __all__ = ["sweep_command"]
 
@@ -270,9 +272,11 @@ def _dask_client(address: str | None) -> Any:
     "after_vy, after_omega, regime, slip_before, slip_after, impulse_ratio, "
     "dissipated_energy, dissipated_fraction; energy_loss is an alias of dissipated_fraction). "
     "--planar: any PlanarImpact column that is not an input (also creates_energy, tau0, "
-    "tau1, newton_restitution, ...).",
+    "tau1, newton_restitution, ...). --sphere: any SphereImpact column that is not an "
+    "input (default after_vx..after_wz, regime; also grips, topspin, rebound_angle, ...).",
 )
 @click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
+@sphere_options
 @click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
 @click.option(
     "--dry-run",
@@ -305,7 +309,14 @@ def sweep_command(
     pendulum under one --law, e.g. --planar rod --length 1 --angle-deg 45 --law newton."""
     from ..io.sweep import Sweep, estimate_sweep, parse_axis, run_sweep
 
-    if o["planar"] is None:
+    if o["sphere"] is None:
+        for name in SPHERE_ONLY:
+            if _given(ctx, name):
+                raise click.UsageError(f"{_flag(name)} needs --sphere (a sphere's sweep)")
+    if o["sphere"] is not None:
+        sweep, default_fields = sphere_sweep(ctx, o, samples, seed, chunk_size)
+        fields = default_fields or fields
+    elif o["planar"] is None:
         for name in _PLANAR_ONLY:
             if _given(ctx, name):
                 raise click.UsageError(f"{_flag(name)} needs --planar (a planar body's sweep)")
@@ -364,6 +375,7 @@ def sweep_command(
         if client is not None:
             client.close()
     about = f" ({body.name}, {o['law']} law)" if o["planar"] else ""
+    about = f" ({sweep.body.name})" if o["sphere"] else about
     click.echo(f"{result.points:,} points{about}")
     width = max(map(len, result.regimes)) + 1
     for name, fraction in result.regime_fractions.items():

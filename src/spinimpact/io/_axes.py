@@ -9,10 +9,14 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["INPUTS", "KINDS", "Axis", "parse_axis", "positive_int", "uniform_stream"]
+__all__ = ["INPUTS", "KINDS", "NAMES", "Axis", "parse_axis", "positive_int", "uniform_stream"]
 
 #: The inputs a sweep varies (SI units): vx, vy in m/s, omega in rad/s, mu and kappa.
 INPUTS = ("vx", "vy", "omega", "mu", "kappa")
+#: Every name an axis may have: :data:`INPUTS`, then a sphere's ``vz`` (m/s) and spin
+#: ``wx, wy, wz`` (rad/s) (:mod:`~spinimpact.io.sphere_sweep`). A name's place here numbers
+#: its random stream, so new names go at the end.
+NAMES = (*INPUTS, "vz", "wx", "wy", "wz")
 #: The kinds of axis.
 KINDS = ("fixed", "grid", "uniform")
 
@@ -65,10 +69,8 @@ class Axis:
     num: int = 1
 
     def __post_init__(self) -> None:
-        if not isinstance(self.name, str) or self.name not in INPUTS:
-            raise ValueError(
-                f"an axis's name must be one of {', '.join(INPUTS)}, got {self.name!r}"
-            )
+        if not isinstance(self.name, str) or self.name not in NAMES:
+            raise ValueError(f"an axis's name must be one of {', '.join(NAMES)}, got {self.name!r}")
         if not isinstance(self.kind, str) or self.kind not in KINDS:
             raise ValueError(
                 f"{self.name}: an axis's kind must be one of {', '.join(KINDS)}, got {self.kind!r}"
@@ -132,7 +134,7 @@ def uniform_stream(seed: int, name: str, start: int, n: int, lo: float, hi: floa
     """Points ``start`` to ``start + n`` of input ``name``'s random stream, uniform on
     ``[lo, hi)``: the stream is advanced to ``start`` (each value takes one 64-bit draw),
     so the numbers do not depend on how the points are cut into chunks."""
-    bits = np.random.PCG64(np.random.SeedSequence([seed, INPUTS.index(name)]))
+    bits = np.random.PCG64(np.random.SeedSequence([seed, NAMES.index(name)]))
     bits.advance(start)
     return np.random.Generator(bits).uniform(lo, hi, n)
 
@@ -143,7 +145,7 @@ def parse_axis(name: str, text: str | float) -> Axis:
     Parameters
     ----------
     name : str
-        One of :data:`INPUTS`.
+        One of :data:`NAMES`.
     text : str or float
         ``"3"`` (fixed), ``"-5:5:101"`` (grid: start, stop, number of points) or
         ``"uniform:-5:5"`` (random).
@@ -159,8 +161,8 @@ def parse_axis(name: str, text: str | float) -> Axis:
     >>> parse_axis("vx", "-5:5:101")
     Axis(name='vx', kind='grid', lo=-5.0, hi=5.0, num=101)
     """
-    if name not in INPUTS:
-        raise ValueError(f"sweep inputs are {', '.join(INPUTS)}; got {name!r}")
+    if name not in NAMES:
+        raise ValueError(f"sweep inputs are {', '.join(NAMES)}; got {name!r}")
     parts = str(text).split(":")
     try:
         if len(parts) == 1:

@@ -289,7 +289,11 @@ def plan(
     histogram: tuple[str, float, float, int] | None,
     output: str | os.PathLike[str] | None,
 ) -> tuple[str | None, tuple[str, ...]]:
-    """Check the fields and the histogram; the output's kind and the columns it holds."""
+    """Check the fields and the histogram; the output's kind and the columns it holds.
+    Fields left at :data:`DEFAULT_FIELDS` are the sweep's ``default_fields`` where it has
+    them (a sphere's: it has no ``after_omega``)."""
+    if fields is DEFAULT_FIELDS:
+        fields = getattr(sweep, "default_fields", fields)
     for name in fields:
         sweep.field_name(name)
     if histogram is not None:
