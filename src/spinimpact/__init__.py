@@ -15,6 +15,12 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 """
 
 from .model.body import Body
+from .model.compliance import (
+    CompliantImpact,
+    CompliantSphereImpact,
+    TangentialLaw,
+    Walton,
+)
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.pair import PairImpact, solve_pair
 from .model.particle import ParticleImpact, solve_particle
@@ -40,6 +46,10 @@ __all__ = [
     "State3",
     "SphereImpact",
     "Body",
+    "CompliantImpact",
+    "CompliantSphereImpact",
+    "TangentialLaw",
+    "Walton",
     "ConstantRestitution",
     "History",
     "Impact",

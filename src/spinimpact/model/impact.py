@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -11,6 +11,7 @@ import numpy as np
 from .. import core
 from .._validation import as_real_array, broadcast, check, validated, whole
 from . import result
+from ._hooks import tangential_law
 from .body import Body
 from .result import Result, freeze, plain_repr
 
@@ -177,7 +178,7 @@ class Impact(Result):
         if any(np.ndim(x) for x in parts):
             m, r, g, z = (np.broadcast_to(x, self.shape)[index] for x in parts)
             body = body._with_zeta(z, mass=m, radius=r, gyration=g)
-        return _replace(imp, body=body)
+        return replace(imp, body=body)
 
     def history(self, n: int = 201, *, tau: Any = None) -> History:
         """The impact process over the normal impulse ``tau`` (Figs. 2-5).
@@ -244,12 +245,6 @@ class Impact(Result):
         )
 
 
-def _replace(obj: Any, **changes: Any) -> Any:
-    values = {f.name: getattr(obj, f.name) for f in fields(obj)}
-    values.update(changes)
-    return type(obj)(**values)
-
-
 def _restitution(kappa: Any, vy: np.ndarray) -> np.ndarray:
     if callable(kappa):  # a RestitutionModel or any function of the impact speed
         model: Callable[[np.ndarray], Any] = kappa
@@ -268,6 +263,7 @@ def solve(
     *,
     mu: Any,
     kappa: Any,
+    tangential: Any = None,
 ) -> Impact:
     r"""Solve the frictional impact of a spinning body on a fixed rough surface.
 
@@ -288,6 +284,8 @@ def solve(
         Coefficient of normal restitution in ``[0, 1]``, or a restitution model:
         a callable of the impact speed ``|vy|`` returning ``kappa`` (for example
         :class:`~spinimpact.TabulatedRestitution`).
+    tangential : Walton or Stronge, optional
+        A tangential compliance law; the result is then a :class:`~spinimpact.CompliantImpact`.
 
     Returns
     -------
@@ -331,6 +329,8 @@ def solve(
     >>> str(imp.regime), round(float(imp.after.vx / imp.before.vx), 12)   # 5/7 rule
     ('stick-compression', 0.714285714286)
     """
+    if tangential is not None:  # the law solves it (spinimpact.model.compliance)
+        return tangential_law(tangential)._solve_plane(body, vx, vy, omega, mu=mu, kappa=kappa)
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     vx_, vy_, om_, mu_ = (

@@ -17,6 +17,7 @@ import numpy as np
 from .. import core
 from .._validation import check, validated, vector3, whole
 from ..core import sphere3d as kernels
+from ._hooks import tangential_law
 from .body import Body
 from .impact import _restitution
 from .result import Array, Result, freeze
@@ -217,8 +218,9 @@ def _spin_components(normal, travel, spin):
 
 
 def solve_sphere(
-    body: Body, velocity: Any, spin: Any, *, mu: Any, kappa: Any, surface: Surface | None = None
-) -> SphereImpact:
+    body: Body, velocity: Any, spin: Any, *, mu: Any, kappa: Any,
+    surface: Surface | None = None, tangential: Any = None,
+) -> SphereImpact:  # fmt: skip
     """Solve the frictional impact of a spinning sphere on a plane, in 3D.
 
     Parameters
@@ -236,6 +238,9 @@ def solve_sphere(
         Coefficient of restitution in ``[0, 1]``, or a model of the normal impact speed.
     surface : Surface, optional
         The plane's normal and velocity; by default ``y = 0`` at rest.
+    tangential : Walton or Stronge, optional
+        A tangential compliance law; the result is then a
+        :class:`~spinimpact.CompliantSphereImpact` with the law's tangential restitution.
 
     Returns
     -------
@@ -261,6 +266,9 @@ def solve_sphere(
     >>> str(imp.regime), float(imp.after.wy)
     ('stick-restitution', 150.0)
     """
+    if tangential is not None:  # the law solves it (spinimpact.model.compliance)
+        return tangential_law(tangential)._solve_sphere(body, velocity, spin, mu=mu,
+                                                        kappa=kappa, surface=surface)  # fmt: skip
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     surface = Surface() if surface is None else surface
