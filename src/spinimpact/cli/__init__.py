@@ -3,7 +3,7 @@
 One module per group of commands: :mod:`~spinimpact.cli.solve` (``solve``,
 ``report``), :mod:`~spinimpact.cli.batch`, :mod:`~spinimpact.cli.sweep`,
 :mod:`~spinimpact.cli.simulate`, :mod:`~spinimpact.cli.pictures` (``map``,
-``figures``) and :mod:`~spinimpact.cli.planar`; what they share is in
+``figures``), :mod:`~spinimpact.cli.planar` and :mod:`~spinimpact.cli.fit`; what they share is in
 :mod:`~spinimpact.cli._common`.
 
 Errors in the input are reported as one line on stderr with exit status 2 and
@@ -17,6 +17,7 @@ import numpy as np
 
 from ._common import DEFAULTS, errors_to_exit_2
 from .batch import batch_command
+from .fit import fit_command
 from .pictures import figures_command, map_command
 from .planar import planar_command
 from .simulate import simulate_command
@@ -48,6 +49,7 @@ for _command in (
     planar_command,
     sphere_command,
     pair_command,
+    fit_command,
 ):
     cli.add_command(_command)
 

@@ -1,0 +1,248 @@
+"""``spinimpact fit bounces.csv``: fit friction and restitution to measured bounces, or
+``kappa(|v|)`` to drop tests (``--drops``), and print the estimates with their intervals."""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import warnings
+from pathlib import Path
+from typing import Any
+
+import click
+import numpy as np
+
+from ..model.body import PRESETS, Body
+from ..model.fit_models import TANGENTIAL
+from ._common import image_format, jsonable
+
+__all__ = ["fit_command", "read_columns", "DROP_COLUMNS"]
+
+#: Columns of a drop-test file: heights (m) or speeds (m/s), with optional sigmas.
+DROP_COLUMNS = {
+    "heights": ("drop_height", "rebound_height"),
+    "speeds": ("impact_speed", "rebound_speed"),
+}
+
+
+def read_columns(path: str) -> dict[str, np.ndarray]:
+    """A CSV file as named float columns; an empty cell is NaN (not measured), lines
+    starting with ``#`` are comments.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, line and column of a cell that is not a number, or a file
+        with no header or no rows.
+    """
+    with open(path, newline="", encoding="utf-8") as fh:
+        lines = (line for line in fh if not line.lstrip().startswith("#"))
+        reader = csv.reader(lines)
+        header = next(reader, None)
+        if not header:
+            raise ValueError(f"{path}: empty file (no header line)")
+        names = [h.strip() for h in header]
+        if len(set(names)) != len(names):
+            raise ValueError(f"{path}: repeated column names in the header: {names}")
+        rows = []
+        for line, row in enumerate(reader, start=2):
+            if not any(cell.strip() for cell in row):
+                continue
+            if len(row) != len(names):
+                raise ValueError(
+                    f"{path}: row {line} has {len(row)} cells, the header {len(names)}"
+                )
+            values = []
+            for name, cell in zip(names, row, strict=True):
+                text = cell.strip()
+                try:
+                    values.append(float(text) if text else math.nan)
+                except ValueError:
+                    raise ValueError(
+                        f"{path}: row {line}, column {name}: {text!r} is not a number"
+                    ) from None
+                if text.lower() in ("nan", "inf", "-inf", "+inf", "infinity", "-infinity"):
+                    raise ValueError(f"{path}: row {line}, column {name}: {text!r}; leave a "
+                                     f"value that was not measured empty")  # fmt: skip
+            rows.append(values)
+    if not rows:
+        raise ValueError(f"{path}: no rows after the header")
+    table = np.array(rows, dtype=float)
+    return {name: table[:, i] for i, name in enumerate(names)}
+
+
+def _knots(text: str) -> str | list[float]:
+    if text in ("constant", "power"):
+        return text
+    try:
+        return [float(x) for x in text.split(",")]
+    except ValueError:
+        raise click.BadParameter(
+            f"{text!r}: give constant, power, or knot speeds in m/s such as 1,2,4",
+            param_hint="--restitution",
+        ) from None
+
+
+def _fixed(items: tuple[str, ...]) -> dict[str, float]:
+    out = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        try:
+            out[name.strip()] = float(value)
+        except ValueError:
+            sep = ""
+        if not sep:
+            raise click.BadParameter(f"{item!r}: write NAME=VALUE, e.g. kappa=0.98",
+                                     param_hint="--fix")  # fmt: skip
+    return out
+
+
+def _drops(columns: dict[str, np.ndarray], o: dict[str, Any]) -> Any:
+    from ..model.fit_drops import fit_drops
+
+    for kind, (before, after) in DROP_COLUMNS.items():
+        if before in columns and after in columns:
+            allowed = {before, after, f"sigma_{before}", f"sigma_{after}"}
+            unknown = sorted(set(columns) - allowed)
+            if unknown:
+                raise ValueError(f"unknown column(s) for drop tests: {', '.join(unknown)}; "
+                                 f"the columns are {', '.join(sorted(allowed))}")  # fmt: skip
+            for name in columns:
+                bad = np.flatnonzero(np.isnan(columns[name]))
+                if bad.size:
+                    raise ValueError(f"column {name} is empty at row {int(bad[0]) + 2}")
+            sb, sa = columns.get(f"sigma_{before}"), columns.get(f"sigma_{after}")
+            return fit_drops(columns[before], columns[after], heights=kind == "heights",
+                             sigma_before=sb, sigma_after=sa, restitution=o["restitution"],
+                             confidence=o["confidence"])  # fmt: skip
+    names = " or ".join(" and ".join(c) for c in DROP_COLUMNS.values())
+    raise ValueError(f"missing columns: a drop-test file needs {names}")
+
+
+def _print(res: Any) -> None:
+    from rich.console import Console
+    from rich.table import Table
+    from rich.text import Text
+
+    console = Console()
+    level = f"{100 * res.confidence:g} %"
+    table = Table(title=Text(f"fit: {res.model}"), title_justify="left")
+    for col in ("parameter", "estimate", "std. error", f"{level} interval (profile likelihood)"):
+        table.add_column(col, justify="left" if col == "parameter" else "right")
+    for name in res.names:
+        e = res[name]
+        ival = f">= {e.low:.5g} (one-sided)" if e.one_sided else f"[{e.low:.5g}, {e.high:.5g}]"
+        table.add_row(Text(name), f"{e.estimate:.5g}", f"{e.standard_error:.3g}", ival)
+    for name, value in res.fixed.items():
+        table.add_row(Text(name), f"{value:.5g}", "fixed", "")
+    console.print(table)
+    sig = "sigmas given" if res.sigma_given else f"sigma estimated: {res.scale:.3g} m/s"
+    console.print(Text(f"{res.n_bounces} bounces, {res.n_observations} measured values, "
+                       f"{res.dof} degrees of freedom ({sig})"))  # fmt: skip
+    console.print(Text(f"chi2 = {res.chi2:.4g}, reduced chi2 = {res.reduced_chi2:.4g}, "
+                       f"AIC = {res.aic:.5g}, BIC = {res.bic:.5g}"))  # fmt: skip
+    if res.n_sliding or res.n_sticking:
+        console.print(Text(f"friction: {res.identifiability}"))
+
+
+@click.command("fit")
+@click.argument("bounces", type=click.Path(dir_okay=False))
+@click.option("--model", type=click.Choice(TANGENTIAL), default="rigid", show_default=True,
+              help="Tangential model.")  # fmt: skip
+@click.option("--restitution", default="constant", show_default=True,
+              help="kappa: constant, power (kappa_ref (|vy|/v_ref)^exponent), or knot "
+                   "speeds in m/s (e.g. 1,2,4) between which kappa is interpolated.")  # fmt: skip
+@click.option("--fix", multiple=True, metavar="NAME=VALUE",
+              help="Hold a parameter at a value, e.g. --fix kappa=0.98 (repeatable).")  # fmt: skip
+@click.option("--free-gyration", is_flag=True, help="Fit the radius of gyration too.")
+@click.option("--body", type=click.Choice(list(PRESETS)), default=None,
+              help="Body preset (default solid-sphere).")  # fmt: skip
+@click.option("--radius", type=float, default=None,
+              help="Contact radius R, m (needed whenever spin is measured or given).")  # fmt: skip
+@click.option(
+    "--gyration", type=float, default=None, help="Radius of gyration rho, m (custom body)."
+)
+@click.option("--confidence", type=float, default=0.95, show_default=True,
+              help="Level of the intervals.")  # fmt: skip
+@click.option("--drops", is_flag=True,
+              help="The file holds drop tests: drop_height,rebound_height (m) or "
+                   "impact_speed,rebound_speed (m/s), optional sigma_<column>.")  # fmt: skip
+@click.option(
+    "--plot", default=None, help="Measured against fitted and residuals (.png/.svg/.pdf)."
+)
+@click.option("--corner", default=None, help="Corner plot of the parameters (.png/.svg/.pdf).")
+@click.option("--json", "json_path", default=None, help="Write every result field as JSON here.")
+@click.option("--dpi", type=click.IntRange(20, 1200), default=100, show_default=True)
+def fit_command(bounces: str, **o: Any) -> None:
+    """Fit friction and restitution to measured bounces in a CSV file.
+
+    \b
+    Columns (SI units; an empty cell is a value not measured):
+      vx, vy, omega                 incidence (m/s, m/s < 0, rad/s), required
+      after_vx, after_vy, after_omega   measured rebound, at least one
+      sigma_after_vx, sigma_after_vy, sigma_after_omega   standard deviations
+                                    (all three or none; none: one sigma estimated)
+    Estimates by weighted least squares; intervals from the profile likelihood.
+    """
+    for option in ("plot", "corner"):
+        if o[option] is not None:
+            image_format(o[option], f"--{option}")
+    if not Path(bounces).is_file():
+        raise click.BadParameter(f"{bounces!r} is not a file", param_hint="BOUNCES")
+    restitution = _knots(o["restitution"])
+    o["restitution"] = restitution
+    fixed = _fixed(o["fix"])
+    columns = read_columns(bounces)
+    from ..model.fit_result import FitWarning
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", FitWarning)  # a fit that does not converge: an error
+        try:
+            res = _drops(columns, o) if o["drops"] else _bounces(columns, o, fixed)
+        except FitWarning as exc:
+            raise RuntimeError(str(exc)) from None
+    if o["corner"] is not None and len(res.names) < 2:
+        raise ValueError(f"--corner needs at least two fitted parameters, got {len(res.names)}")
+    _print(res)
+    _write(res, o)
+
+
+def _bounces(columns: dict[str, np.ndarray], o: dict[str, Any], fixed: dict[str, float]) -> Any:
+    from ..model.fit import fit
+    from ..model.fit_data import Bounces
+
+    data = Bounces.from_columns(columns)
+    spin = np.any(data.omega != 0) or np.any(data.measured[:, 2])
+    if o["radius"] is None:
+        if spin:
+            raise click.UsageError("--radius is needed: the file gives or measures spin")
+        o["radius"] = 1.0  # without spin the radius plays no part
+    if o["gyration"] is not None:
+        if o["body"] is not None:
+            raise click.UsageError("give either --body or --gyration, not both")
+        body = Body(mass=1.0, radius=o["radius"], gyration=o["gyration"])
+    else:
+        body = Body.preset(o["body"] or "solid-sphere", mass=1.0, radius=o["radius"])
+    return fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
+               free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
+
+
+def _write(res: Any, o: dict[str, Any]) -> None:
+    from ..io import atomic_path
+
+    if o["json_path"] is not None:
+        with atomic_path(o["json_path"]) as tmp:
+            tmp.write_text(json.dumps(jsonable(res.to_dict()), indent=2), encoding="utf-8")
+    for option in ("plot", "corner"):
+        path = o[option]
+        if path is None:
+            continue
+        from ..viz.fit import plot_corner, plot_fit
+
+        fig = plot_fit(res) if option == "plot" else plot_corner(res)
+        with atomic_path(path) as tmp:
+            fig.savefig(tmp, format=image_format(path, f"--{option}"), dpi=o["dpi"])
+    for path in (o["json_path"], o["plot"], o["corner"]):
+        if path is not None:
+            click.echo(f"wrote {path}")

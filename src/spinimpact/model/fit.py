@@ -1,0 +1,293 @@
+r"""Fit friction, restitution and the body's gyration to measured bounces.
+
+:func:`fit` finds the parameters of a rebound model that best explain measured
+rebounds (weighted least squares, the Gaussian maximum likelihood), with standard
+errors from the curvature and confidence intervals from the profile likelihood. The
+model is evaluated on all bounces at once (:mod:`spinimpact.model.fit_models`); the
+profile and the intervals are in :mod:`spinimpact.model.fit_profile`.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from .._validation import setting
+from .body import Body
+from .fit_data import Bounces
+from .fit_models import FitModel, make_model
+from .fit_profile import Problem, curvature, intervals, minimize, threshold
+from .fit_result import FitResult, FitWarning
+
+__all__ = ["fit", "FitResult", "FitWarning"]
+
+
+def _start(fm: FitModel, bounces: Bounces, given: Mapping[str, float]) -> np.ndarray:
+    """Starting values from the data: restitution from the measured ``vy^+``, the body's
+    gyration; ``mu`` is chosen afterwards by a scan (:func:`fit`)."""
+    speed = -bounces.vy
+    ratio = bounces.after_vy / speed
+    ok = np.isfinite(ratio) & (ratio > 0)
+    k0 = float(np.clip(np.median(ratio[ok]), 0.05, 0.99)) if ok.any() else 0.8
+    theta = []
+    for p in fm.parameters:
+        if p.name in given:
+            theta.append(float(given[p.name]))
+        elif p.name == "mu":
+            theta.append(0.1)
+        elif p.name in ("kappa", "kappa_ref") or p.name.startswith("kappa_at_"):
+            theta.append(k0)
+        elif p.name == "exponent":
+            use = ok & (np.ptp(speed[ok]) > 0 if ok.sum() > 1 else False)
+            slope = np.polyfit(np.log(speed[use]), np.log(ratio[use]), 1)[0] if use.sum() > 1 else 0
+            theta.append(float(np.clip(slope, -1.0, 1.0)))
+        else:  # gyration
+            theta.append(float(np.mean(fm.body.gyration)))
+    return np.array(theta)
+
+
+def _fixed(fm: FitModel, fixed: Mapping[str, float] | None) -> dict[str, float]:
+    if fixed is None:
+        return {}
+    if not isinstance(fixed, Mapping):
+        raise TypeError(f"fixed must be a dict of parameter name to value, got {fixed!r}")
+    out = {}
+    for name, value in fixed.items():
+        if name not in fm.names:
+            raise ValueError(f"fixed names an unknown parameter {name!r}; "
+                             f"this model has {', '.join(fm.names)}")  # fmt: skip
+        p = fm.parameters[fm.names.index(name)]
+        v = setting(f"fixed[{name!r}]", value)
+        if not p.low <= v <= p.high:
+            raise ValueError(f"fixed[{name!r}] must be in [{p.low:g}, {p.high:g}], got {value!r}")
+        out[name] = v
+    if len(out) == len(fm.names):
+        raise ValueError("every parameter is fixed: nothing to fit")
+    return out
+
+
+def fit(
+    bounces: Bounces,
+    body: Body,
+    *,
+    model: str = "rigid",
+    restitution: str | Sequence[float] = "constant",
+    free_gyration: bool = False,
+    fixed: Mapping[str, float] | None = None,
+    start: Mapping[str, float] | None = None,
+    confidence: float = 0.95,
+    reference_speed: float | None = None,
+) -> FitResult:
+    r"""Fit a rebound model to measured bounces, with honest uncertainties.
+
+    Parameters
+    ----------
+    bounces : Bounces
+        Incidences, measured rebounds (any value may be missing) and, optionally,
+        their standard deviations.
+    body : Body
+        The body. Its radius turns spin into contact-point speed; its mass does not
+        matter (the rebound velocities do not depend on it).
+    model : str
+        The tangential model: ``"rigid"`` (Coulomb friction ``mu``, the paper's
+        closed form).
+    restitution : {"constant", "power"} or sequence of float
+        ``kappa`` constant; ``kappa = kappa_ref (|vy|/v_ref)^exponent`` (clipped to
+        ``[0, 1]``); or knot speeds (m/s) at which ``kappa`` is fitted and between which
+        it is interpolated linearly in ``|vy|``.
+    free_gyration : bool
+        Fit the radius of gyration ``rho`` (m) too, instead of taking the body's.
+    fixed : dict, optional
+        Parameters held at given values, e.g. ``{"kappa": 0.98}`` from a drop test.
+    start : dict, optional
+        Starting values (by default from the data, and a scan over ``mu``).
+    confidence : float
+        Level of the confidence intervals, in ``(0.5, 1)``.
+    reference_speed : float, optional
+        ``v_ref`` of the power law, m/s (default: geometric mean of ``|vy|``).
+
+    Returns
+    -------
+    FitResult
+        Estimates, standard errors, covariance, correlation, profile-likelihood
+        intervals, residuals, ``chi2``, AIC, BIC, and which bounces slid.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For bad options, a fixed value out of range, or fewer measured values than free
+        parameters plus one ("too few usable values").
+
+    Warns
+    -----
+    FitWarning
+        When the optimizer does not converge (``converged`` is then ``False``).
+
+    Notes
+    -----
+    The estimate minimizes :math:`\chi^2(\theta) = \sum_i ((y_i - f_i(\theta))/\sigma_i)^2`
+    over the measured values only. Without sigmas, velocities are weighted in m/s and
+    spins as ``R omega``, one common :math:`\sigma` is estimated as
+    :math:`s^2 = \chi^2_{min}/\nu` (:math:`\nu` degrees of freedom) and the covariance
+    is scaled by it, as :func:`scipy.optimize.curve_fit` does without ``absolute_sigma``.
+
+    The interval of each parameter is the set of values whose profile
+    :math:`\chi^2` (the other parameters re-fitted) rises by less than the
+    :math:`\chi^2_1` quantile at ``confidence`` (known sigmas) or by less than
+    :math:`s^2 F_{1,\nu}` (estimated sigma) [1]_. Unlike :math:`\pm 1.96` standard
+    errors it follows the model's kinks and the parameter's bounds, and where the
+    likelihood is flat to infinity, as for ``mu`` when every bounce sticks, it gives
+    a one-sided lower bound (at the one-sided level, :math:`\chi^2_1` at
+    ``2 confidence - 1``) instead of a meaningless symmetric interval.
+
+    References
+    ----------
+    .. [1] D. J. Venzon and S. H. Moolgavkar, "A method for computing
+       profile-likelihood-based confidence intervals", Applied Statistics 37 (1988)
+       87-94.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from spinimpact import Body, solve
+    >>> from spinimpact.model.fit import fit
+    >>> from spinimpact.model.fit_data import Bounces
+    >>> ball = Body.solid_sphere(mass=0.06, radius=0.033)
+    >>> vx = np.linspace(1.0, 12.0, 12); vy = np.full(12, -4.0); om = np.zeros(12)
+    >>> true = solve(ball, vx, vy, om, mu=0.3, kappa=0.7).after
+    >>> data = Bounces(vx, vy, om, after_vx=true.vx, after_vy=true.vy, after_omega=true.omega,
+    ...                sigma_after_vx=0.05, sigma_after_vy=0.05, sigma_after_omega=2.0)
+    >>> res = fit(data, ball)
+    >>> round(res["mu"].estimate, 6), round(res["kappa"].estimate, 6)
+    (0.3, 0.7)
+    >>> print(res.identifiability)
+    5 bounce(s) slid throughout (they determine mu), 7 stuck (they only bound mu from below)
+    >>> print(res["mu"])
+    mu = 0.3 +- 0.0017 [0.2967, 0.3033]
+    """
+    if not isinstance(bounces, Bounces):
+        raise TypeError(f"bounces must be a spinimpact.Bounces, got {type(bounces).__name__}")
+    if isinstance(free_gyration, bool) is False:
+        raise TypeError(f"free_gyration must be True or False, got {free_gyration!r}")
+    conf = setting("confidence", confidence, low=0.5, rule="in (0.5, 1)")
+    if conf >= 1.0:
+        raise ValueError(f"confidence must be in (0.5, 1), got {confidence!r}")
+    if reference_speed is not None:
+        reference_speed = setting("reference_speed", reference_speed, low=0.0,
+                                  rule="a speed > 0 (m/s)")  # fmt: skip
+    fm = make_model(body, bounces, tangential=model, restitution=restitution,
+                    free_gyration=free_gyration, reference_speed=reference_speed)  # fmt: skip
+    held = _fixed(fm, fixed)
+    begin = dict(start or {})
+    for name in begin:
+        if name not in fm.names:
+            raise ValueError(f"start names an unknown parameter {name!r}")
+    theta = _start(fm, bounces, {**begin, **held})
+    for p in fm.parameters:  # a starting value strictly inside its bounds
+        i = fm.names.index(p.name)
+        if p.name not in held:
+            theta[i] = float(np.clip(theta[i], p.low, p.high))
+    free = np.array([n not in held for n in fm.names])
+    n_obs, k = bounces.n_observations, int(free.sum())
+    if n_obs <= k:
+        raise ValueError(
+            f"too few usable values: {n_obs} measured value(s) in {len(bounces)} bounce(s) "
+            f"for {k} free parameter(s) ({', '.join(np.array(fm.names)[free])}); "
+            f"need at least {k + 1}"
+        )
+    prob = Problem(fm, bounces, theta, free)
+    if "mu" not in held and "mu" not in begin:
+        prob.theta[fm.names.index("mu")] = prob.scan_mu()
+    best = minimize(prob, prob.theta[free])
+    if not best.success:
+        warnings.warn(f"the fit did not converge: {best.message}", FitWarning, stacklevel=2)
+    for _ in range(3):
+        x = best.x
+        chi2 = prob.chi2(x)
+        s2 = 1.0 if prob.sigma_given else chi2 / prob.dof
+        cov, se = curvature(prob, x, s2)
+        ivals = intervals(prob, x, conf, se)
+        if ivals.better is None:
+            break
+        best = minimize(prob, ivals.better)  # a profile met a lower chi2: start again there
+    return _result(prob, best, x, cov, se, ivals, conf, held)
+
+
+def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.ndarray,
+            ivals: Any, conf: float, held: dict[str, float]) -> FitResult:  # fmt: skip
+    fm, data = prob.model, prob.bounces
+    theta = prob.full(x)
+    chi2 = prob.chi2(x)
+    dof = prob.dof
+    s2 = 1.0 if prob.sigma_given else chi2 / dof
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(se, se)
+    corr[np.isinf(np.outer(se, se))] = np.nan
+    np.fill_diagonal(corr, 1.0)
+    fitted = fm.predict(theta, data)
+    measured = data.measured
+    obs = data.observed
+    sigma = prob.sigma * np.sqrt(s2)
+    sigma = np.where(measured, sigma, np.nan)
+    resid = np.where(measured, obs - fitted, np.nan)
+    tangential = measured[:, 0] | measured[:, 2]
+    sliding, sticking = fm.contact(theta, data)
+    sliding, sticking = sliding & tangential, sticking & tangential
+    n = data.n_observations
+    if prob.sigma_given:
+        loglik = -0.5 * (chi2 + float(np.sum(np.log(2 * np.pi * prob.sigma[measured] ** 2))))
+        k = x.size
+    else:
+        with np.errstate(divide="ignore"):  # a perfect fit: the likelihood is unbounded
+            loglik = -0.5 * n * (np.log(2 * np.pi * chi2 / n) + 1.0)
+        loglik += float(np.sum(np.log(1.0 / prob.sigma[measured])))  # the weights' Jacobian
+        k = x.size + 1
+    with np.errstate(invalid="ignore", divide="ignore"):  # sigma 0: a perfect fit, no sigma given
+        normalized = resid / sigma
+    preds = [fm.predict(prob.full(e), data) for e in ivals.ends]
+    lows = np.min([fitted, *preds], axis=0)
+    highs = np.max([fitted, *preds], axis=0)
+    return FitResult(
+        model=fm.description,
+        names=tuple(np.array(fm.names)[prob.free].tolist()),
+        estimate=x.copy(),
+        standard_error=se,
+        covariance=cov,
+        correlation=corr,
+        interval_low=ivals.low,
+        interval_high=ivals.high,
+        one_sided=ivals.one_sided,
+        confidence=conf,
+        threshold=threshold(conf, dof, prob.sigma_given),
+        fixed=held,
+        observed=obs,
+        fitted=fitted,
+        fitted_low=lows,
+        fitted_high=highs,
+        residuals=resid,
+        normalized_residuals=normalized,
+        sigma=sigma,
+        incidence=np.stack([data.vx, data.vy, data.omega], axis=-1),
+        incidence_angle_deg=data.incidence_angle_deg,
+        sliding=sliding,
+        sticking=sticking,
+        n_sliding=int(sliding.sum()),
+        n_sticking=int(sticking.sum()),
+        chi2=chi2 if prob.sigma_given else float(dof),  # chi2/s^2 = dof by construction
+        dof=int(dof),
+        reduced_chi2=chi2 / dof if prob.sigma_given else 1.0,
+        scale=float("nan") if prob.sigma_given else float(np.sqrt(s2)),
+        sigma_given=prob.sigma_given,
+        log_likelihood=float(loglik),
+        aic=float(2 * k - 2 * loglik),
+        bic=float(k * np.log(n) - 2 * loglik),
+        n_bounces=len(data),
+        n_observations=n,
+        converged=bool(best.success),
+        message=str(best.message),
+        evaluations=prob.evaluations,
+        profiles=ivals.profiles,
+    )

@@ -1,0 +1,66 @@
+"""spinimpact.model.fit_drops: kappa(|v|) from drop tests, with uncertainties."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from spinimpact import TabulatedRestitution
+from spinimpact.model.fit_drops import fit_drops
+
+G = 9.80665
+H0 = np.linspace(0.2, 2.0, 10)
+V0 = np.sqrt(2 * G * H0)
+
+
+def kappa(v):
+    return 0.9 * (v / 4.0) ** -0.1
+
+
+def rebound_heights(noise=0.0, seed=0):
+    h1 = (kappa(V0) * V0) ** 2 / (2 * G)
+    return h1 + np.random.default_rng(seed).normal(0.0, noise, h1.shape)
+
+
+def test_a_power_law_is_recovered_from_exact_heights_and_speeds():
+    h1 = rebound_heights()
+    by_height = fit_drops(H0, h1, restitution="power")
+    by_speed = fit_drops(V0, np.sqrt(2 * G * h1), heights=False, restitution="power")
+    for res in (by_height, by_speed):
+        k0 = kappa(np.exp(np.mean(np.log(V0))))  # kappa at the reference speed
+        assert res["kappa_ref"].estimate == pytest.approx(k0, abs=1e-7)
+        assert res["exponent"].estimate == pytest.approx(-0.1, abs=1e-6)
+        assert res.names == ("kappa_ref", "exponent")  # mu plays no part in a drop
+
+
+def test_a_constant_kappa_agrees_with_the_tabulated_model_of_one_drop():
+    res = fit_drops([1.0, 1.0], [0.64, 0.64])
+    table = TabulatedRestitution.from_drop_heights([1.0], [0.64])
+    assert res["kappa"].estimate == pytest.approx(float(table.kappas[0]), abs=1e-9)
+
+
+def test_the_height_error_becomes_the_speed_error():
+    """sigma_v = g sigma_h / v: ten times the height error gives ten times the standard
+    errors (for small errors, where the first order holds)."""
+    h1 = rebound_heights(noise=1e-4)
+    small = fit_drops(H0, h1, sigma_before=1e-5, sigma_after=1e-4, restitution="power")
+    large = fit_drops(H0, h1, sigma_before=1e-4, sigma_after=1e-3, restitution="power")
+    np.testing.assert_allclose(large.standard_error, 10 * small.standard_error, rtol=1e-6)
+    assert small["exponent"].low < -0.1 < small["exponent"].high
+
+
+@pytest.mark.parametrize(
+    "args, kwargs, match",
+    [
+        (([1.0, 0.5], [0.6]), {}, "must be 1-D of one length"),
+        (([1.0, 0.5], [1.2, 0.3]), {}, "cannot rebound higher"),
+        (([1.0, -0.5], [0.6, 0.3]), {}, r"drop heights must be > 0.*index 1"),
+        (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01}, "together"),
+        (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01, "sigma_after": 0.0}, "> 0"),
+        (([1.0, 0.5], [0.6, 0.3]), {"gravity": -9.8}, "gravity"),
+        (([1.0], [0.6]), {}, "too few usable values"),
+    ],
+)  # fmt: skip
+def test_bad_drop_tests_are_refused(args, kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        fit_drops(*args, **kwargs)

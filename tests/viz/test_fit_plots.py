@@ -1,0 +1,64 @@
+"""spinimpact.viz.fit: the measured-against-fitted figure and the corner plot draw the
+fit's own numbers."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, solve
+from spinimpact.model.fit import fit
+from spinimpact.model.fit_data import Bounces
+from spinimpact.viz.fit import plot_corner, plot_fit
+
+pytest.importorskip("matplotlib")
+
+BALL = Body.solid_sphere(mass=0.058, radius=0.033)
+
+
+def data(n=20, same_speed=False, omega_measured=True):
+    rng = np.random.default_rng(3)
+    vy = np.full(n, -4.0) if same_speed else -rng.uniform(2, 6, n)
+    theta = np.radians(np.linspace(10, 75, n))
+    speed = 4.0 if same_speed else -vy / np.cos(theta)
+    vx, vy = speed * np.sin(theta), -speed * np.cos(theta)
+    after = solve(BALL, vx, vy, 0.0, mu=0.3, kappa=lambda v: 0.8 * (v / 3) ** -0.1).after
+    om = after.omega + rng.normal(0, 3, n) if omega_measured else None
+    sig = (0.05, 0.05, 3.0) if omega_measured else (0.05, 0.05, 1.0)
+    return Bounces(vx, vy, np.zeros(n), after.vx + rng.normal(0, 0.05, n),
+                   after.vy + rng.normal(0, 0.05, n), om, *sig)  # fmt: skip
+
+
+def test_one_column_per_measured_quantity_with_the_fits_numbers():
+    res = fit(data(), BALL, restitution="power")
+    fig = plot_fit(res)
+    assert len(fig.axes) == 6
+    top = fig.axes[0]
+    errorbars = [c for c in top.containers]
+    ys = np.concatenate([np.asarray(c.lines[0].get_ydata()) for c in errorbars])
+    np.testing.assert_allclose(np.sort(ys), np.sort(res.observed[:, 0]))
+    assert "\\mu" in fig._suptitle.get_text()
+    assert np.all(res.fitted_low <= res.fitted + 1e-12)
+    assert np.all(res.fitted + 1e-12 >= res.fitted_low)
+    assert np.all(res.fitted_high >= res.fitted - 1e-12)
+
+
+def test_one_speed_draws_a_curve_and_a_missing_quantity_no_column():
+    res = fit(data(same_speed=True, omega_measured=False), BALL)
+    fig = plot_fit(res)
+    assert len(fig.axes) == 4  # vx+ and vy+, each with its residuals
+    fitted = [ln for ln in fig.axes[0].lines if ln.get_label() == "fitted"][0]
+    assert np.all(np.diff(fitted.get_xdata()) > 0)  # a curve over the angle
+
+
+def test_corner_plot_of_three_parameters():
+    res = fit(data(), BALL, restitution="power")
+    fig = plot_corner(res)
+    drawn = [ax for ax in fig.axes if ax.axison]
+    assert len(drawn) == 6  # 3 profiles and 3 pairs
+    profile = fig.axes[0].lines[0]
+    values, rise = res.profiles["mu"]
+    np.testing.assert_allclose(profile.get_xdata(), values)
+    np.testing.assert_allclose(profile.get_ydata(), rise)
+    with pytest.raises(ValueError, match="at least two"):
+        plot_corner(fit(data(), BALL, fixed={"kappa": 0.8}))
