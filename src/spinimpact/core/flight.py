@@ -1,0 +1,198 @@
+"""Flight to the ground: many balls at once, each to its own impact, located precisely.
+
+Two routes give the same kind of :class:`Segment` (the state of every ball where its arc
+ends: on the ground, or in the air at the stopping time):
+
+* :func:`parabola_to_ground` -- no air: the exact parabola. The time to the ground solves
+  ``y + v_y t - g t^2/2 = R`` in closed form (the root without cancellation:
+  ``(v_y + q)/g`` when rising, ``2 h/(q - v_y)`` when falling, ``q = sqrt(v_y^2 + 2 g h)``).
+* :func:`integrate_to_ground` -- with air (:mod:`spinimpact.core.aero`): classical fourth-order
+  Runge-Kutta steps of ``dt`` (each ball from its own time). When a step ends below the
+  ground, the crossing is bracketed on the step's cubic Hermite interpolant of the height
+  (dense output, exact for the parabola) and then polished on the integrator itself: the
+  step size ``s`` with ``y(RK4 step of s) = R`` is found by Newton's method on ``s`` (the
+  derivative of the height is ``v_y``), so the impact is where the integrator's own solution
+  meets the ground, to rounding. The apex of the arc is the zero of the interpolant's
+  derivative inside the step where ``v_y`` changes sign.
+
+Loops run over time steps only; every step advances all the balls still in the air.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from .aero import AeroConstants, derivatives
+
+__all__ = ["Segment", "rk4_step", "parabola_to_ground", "integrate_to_ground"]
+
+
+class Segment(NamedTuple):
+    """Where each ball's arc ends (arrays over the balls)."""
+
+    time: Any  #: s
+    position: Any  #: centre, (n, 3), m (``y = R`` exactly on the ground)
+    velocity: Any  #: (n, 3), m/s
+    spin: Any  #: (n, 3), rad/s
+    hit: Any  #: bool: reached the ground (otherwise the stopping time, in the air)
+    apex_height: Any  #: height of the centre at the top of the arc, m (NaN: not reached)
+    apex_time: Any  #: s
+    path: list  #: ``[(index, times (m, k), positions (m, k, 3)), ...]`` when recorded
+
+
+def rk4_step(position, velocity, spin, h, c: AeroConstants):
+    """One classical Runge-Kutta step of size ``h`` (an array over the balls), s.
+
+    Returns the new ``(position, velocity, spin)``.
+    """
+    hh = np.asarray(h, dtype=float)[..., None]
+    a1, b1 = derivatives(velocity, spin, c)
+    v2, w2 = velocity + 0.5 * hh * a1, spin + 0.5 * hh * b1
+    a2, b2 = derivatives(v2, w2, c)
+    v3, w3 = velocity + 0.5 * hh * a2, spin + 0.5 * hh * b2
+    a3, b3 = derivatives(v3, w3, c)
+    v4, w4 = velocity + hh * a3, spin + hh * b3
+    a4, b4 = derivatives(v4, w4, c)
+    sixth = hh / 6.0
+    position = position + sixth * (velocity + 2.0 * v2 + 2.0 * v3 + v4)
+    velocity = velocity + sixth * (a1 + 2.0 * a2 + 2.0 * a3 + a4)
+    spin = spin + sixth * (b1 + 2.0 * b2 + 2.0 * b3 + b4)
+    return position, velocity, spin
+
+
+def _hermite(theta, y0, y1, m0, m1):
+    """Cubic Hermite interpolant on ``[0, 1]`` (``m``: the derivatives times the step)."""
+    t2, t3 = theta * theta, theta * theta * theta
+    return ((2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + theta) * m0
+            + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1)  # fmt: skip
+
+
+def _hermite_slope(theta, y0, y1, m0, m1):
+    t2 = theta * theta
+    return ((6 * t2 - 6 * theta) * y0 + (3 * t2 - 4 * theta + 1) * m0
+            + (6 * theta - 6 * t2) * y1 + (3 * t2 - 2 * theta) * m1)  # fmt: skip
+
+
+def _bisect(fun, n, iterations=60):
+    """The root of ``fun`` on ``[0, 1]`` for each of ``n`` problems, ``fun(0) >= 0 > fun(1)``."""
+    lo, hi = np.zeros(n), np.ones(n)
+    for _ in range(iterations):
+        mid = 0.5 * (lo + hi)
+        above = fun(mid) >= 0
+        lo, hi = np.where(above, mid, lo), np.where(above, hi, mid)
+    return 0.5 * (lo + hi)
+
+
+def _event(p, v, w, p1, v1, h, c, radius, newton=4):
+    """Polish the ground crossings inside steps of size ``h``: returns the step size to the
+    crossing and the state there (``y = R`` set exactly)."""
+    y0, y1 = p[:, 1] - radius, p1[:, 1] - radius
+    m0, m1 = h * v[:, 1], h * v1[:, 1]
+    theta = _bisect(lambda th: _hermite(th, y0, y1, m0, m1), len(h))
+    s = theta * h
+    for _ in range(newton):  # Newton on the integrator's own solution: dy/ds = v_y
+        ps, vs, _ = rk4_step(p, v, w, s, c)
+        vy = vs[:, 1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(vy < 0, (ps[:, 1] - radius) / vy, 0.0)
+        s = np.clip(s - step, 0.0, h)
+    ps, vs, ws = rk4_step(p, v, w, s, c)
+    ps[:, 1] = radius
+    return s, ps, vs, ws
+
+
+def _apex(p, v, p1, v1, h):
+    """Height and fraction of the step at the top of the arc (``v_y`` from > 0 to <= 0)."""
+    y0, y1 = p[:, 1], p1[:, 1]
+    m0, m1 = h * v[:, 1], h * v1[:, 1]
+    theta = _bisect(lambda th: _hermite_slope(th, y0, y1, m0, m1), len(h))
+    return _hermite(theta, y0, y1, m0, m1), theta
+
+
+def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, radius, t_stop,
+                        dt, record=False) -> Segment:  # fmt: skip
+    """Integrate every ball from its own time until its centre comes down to ``y = R`` or
+    the time reaches ``t_stop`` (module docstring).
+
+    Parameters
+    ----------
+    time : ndarray, shape (n,)
+        Start times, s.
+    position, velocity, spin : ndarray, shape (n, 3)
+        Centre position (m, ``y >= R``), velocity (m/s) and spin (rad/s) at the start.
+    c : AeroConstants
+    radius : float
+        ``R``, m: the ground is the plane ``y = 0``, met when the centre is at ``y = R``.
+    t_stop : float
+        Stopping time, s.
+    dt : float
+        Step, s.
+    record : bool
+        Keep every step's position for pictures.
+    """
+    t, p, v, w = (np.array(a, dtype=float) for a in (time, position, velocity, spin))
+    n = len(t)
+    hit = np.zeros(n, dtype=bool)
+    falling = v[:, 1] <= 0
+    apex_h = np.where(falling, p[:, 1], np.nan)
+    apex_t = np.where(falling, t, np.nan)
+    path: list = [(np.arange(n), t[:, None].copy(), p[:, None, :].copy())] if record else []
+    active = np.flatnonzero(t < t_stop)
+    while active.size:
+        ta, pa, va, wa = t[active], p[active], v[active], w[active]
+        h = np.minimum(dt, t_stop - ta)
+        p1, v1, w1 = rk4_step(pa, va, wa, h, c)
+        cross = p1[:, 1] < radius
+        top = (va[:, 1] > 0) & (v1[:, 1] <= 0)
+        if top.any():
+            height, theta = _apex(pa[top], va[top], p1[top], v1[top], h[top])
+            apex_h[active[top]], apex_t[active[top]] = height, ta[top] + theta * h[top]
+        if cross.any():
+            s, pe, ve, we = _event(pa[cross], va[cross], wa[cross], p1[cross], v1[cross],
+                                   h[cross], c, radius)  # fmt: skip
+            p1[cross], v1[cross], w1[cross] = pe, ve, we
+            h = h.copy()
+            h[cross] = s
+            hit[active[cross]] = True
+        t_new = np.where(h == t_stop - ta, t_stop, ta + h)
+        t[active], p[active], v[active], w[active] = t_new, p1, v1, w1
+        if record:
+            path.append((active, t_new[:, None], p1[:, None, :]))
+        active = active[~cross & (t_new < t_stop)]
+    return Segment(t, p, v, w, hit, apex_h, apex_t, path)
+
+
+def parabola_to_ground(time, position, velocity, spin, *, gravity, radius, t_stop,
+                       record=False, samples=101) -> Segment:  # fmt: skip
+    """The exact parabola to the ground (no air): parameters as :func:`integrate_to_ground`,
+    with ``gravity`` (``g``, m/s^2); ``samples`` points of each arc are kept with
+    ``record``."""
+    t, p, v, w = (np.array(a, dtype=float) for a in (time, position, velocity, spin))
+    height = p[:, 1] - radius
+    vy = v[:, 1]
+    q = np.sqrt(vy * vy + 2.0 * gravity * height)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        down = np.where(q - vy > 0, 2.0 * height / np.where(q - vy > 0, q - vy, 1.0), 0.0)
+    flight = np.where(vy > 0, (vy + q) / gravity, down)
+    hit = t + flight <= t_stop
+    span = np.where(hit, flight, np.maximum(t_stop - t, 0.0))
+    g = np.array([0.0, -gravity, 0.0])
+    end = p + v * span[:, None] + 0.5 * g * (span * span)[:, None]
+    end[hit, 1] = radius
+    rising = vy > 0
+    top_t = np.where(rising, t + vy / gravity, t)
+    reached = top_t <= t + span
+    apex_h = np.where(reached, np.where(rising, p[:, 1] + vy * vy / (2.0 * gravity), p[:, 1]),
+                      np.nan)  # fmt: skip
+    apex_t = np.where(reached, top_t, np.nan)
+    path: list = []
+    if record:
+        frac = np.linspace(0.0, 1.0, samples)
+        s = span[:, None] * frac
+        pts = p[:, None, :] + v[:, None, :] * s[..., None] + 0.5 * g * (s * s)[..., None]
+        pts[:, -1] = end
+        path.append((np.arange(len(t)), t[:, None] + s, pts))
+    return Segment(np.where(hit, t + flight, np.maximum(t, t_stop)), end, v + g * span[:, None],
+                   w, hit, apex_h, apex_t, path)  # fmt: skip

@@ -1,0 +1,163 @@
+"""spinimpact.flight: inputs as a person gives them, every bounce equal to solve_sphere (and
+to the planar solve in a vertical plane) without air, many balls in chunks, the result's
+shape and columns, and bad input."""
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, solve, solve_sphere
+from spinimpact.model.flight import flight, launch
+from spinimpact.model.presets import BALLS, GROUNDS, Ball
+
+G = 9.80665
+
+
+def test_launch_turns_degrees_and_rpm_into_vectors():
+    v, w = launch(10.0, 30.0, direction=90.0, spin_rpm=600.0, spin_axis="topspin")
+    # heading 90 degrees: -z (counter-clockwise seen from above, y up)
+    np.testing.assert_allclose(v, [0, 5.0, -10 * np.cos(np.radians(30))], atol=1e-14)
+    # topspin about e_y x h = e_y x (-e_z) = -e_x, 600 rpm = 20 pi rad/s
+    np.testing.assert_allclose(w, [-20 * np.pi, 0, 0], atol=1e-13)
+    _, back = launch(10.0, 0.0, spin_rpm=600.0, spin_axis="backspin")
+    _, side = launch(10.0, 0.0, spin_rpm=600.0, spin_axis="sidespin")
+    _, vec = launch(10.0, 0.0, spin_rpm=600.0, spin_axis=[0, 0, 2.0])
+    np.testing.assert_allclose(back, [0, 0, 20 * np.pi], atol=1e-13)
+    np.testing.assert_allclose(side, [0, 20 * np.pi, 0], atol=1e-13)
+    np.testing.assert_allclose(vec, back, atol=1e-13)
+    speeds, _ = launch(np.array([1.0, 2.0, 3.0]), 0.0)
+    assert speeds.shape == (3, 3)
+
+
+def test_in_a_vacuum_every_bounce_is_solve_sphere_on_the_parabolas_incidence():
+    ball = BALLS["tennis"]
+    f = flight(ball, "clay", speed=30.0, angle=-8.0, direction=20.0, height=2.5, spin_rpm=1500,
+               spin_axis=[1.0, 0.5, -2.0], air_density=0.0, max_bounces=4)  # fmt: skip
+    v0, _ = launch(30.0, -8.0, 20.0, 1500, [1.0, 0.5, -2.0])
+    g = np.array([0, -G, 0])
+    p, v, t = np.array([0, 2.5, 0]), v0, 0.0
+    for k in range(4):
+        vy, h = v[1], p[1] - ball.radius
+        dt = (vy + np.sqrt(vy**2 + 2 * G * h)) / G  # the parabola meets the ground
+        p, t = p + v * dt + 0.5 * g * dt**2, t + dt
+        v = v + g * dt
+        assert f.bounces.time[k] == pytest.approx(t, rel=1e-13)
+        np.testing.assert_allclose(f.bounces.position.array[k, [0, 2]], p[[0, 2]], rtol=1e-12)
+        np.testing.assert_allclose(f.bounces.before.velocity[k], v, rtol=1e-12, atol=1e-12)
+        imp = solve_sphere(ball.body, f.bounces.before.velocity[k], f.bounces.before.spin[k],
+                           mu=0.8, kappa=0.83)  # fmt: skip
+        np.testing.assert_array_equal(f.bounces.after.velocity[k], imp.after.velocity)
+        np.testing.assert_array_equal(f.bounces.after.spin[k], imp.after.spin)
+        assert bool(f.bounces.grips[k]) == bool(imp.grips)
+        assert f.bounces.regime[k] == imp.regime
+        v = imp.after.velocity
+        p[1] = ball.radius
+
+
+def test_a_flight_in_a_vertical_plane_bounces_as_the_planar_solve():
+    ball = BALLS["table-tennis"]
+    f = flight(ball, "table", speed=8.0, angle=10.0, height=0.3, spin_rpm=3000,
+               spin_axis="backspin", air_density=0.0, max_bounces=3)  # fmt: skip
+    body = Body(mass=ball.mass, radius=ball.radius, gyration=ball.gyration)
+    b = f.bounces
+    imp = solve(body, b.before.vx, b.before.vy, b.before.wz, mu=0.25, kappa=GROUNDS["table"].kappa)
+    speed = np.abs(b.before.vx) + np.abs(b.before.vy)
+    assert np.max(np.abs(b.after.vx - imp.after.vx) / speed) < 1e-15
+    assert np.max(np.abs(b.after.vy - imp.after.vy) / speed) < 1e-15
+    assert np.max(ball.radius * np.abs(b.after.wz - imp.after.omega) / speed) < 1e-15
+    assert not np.any(b.after.vz) and not np.any(b.position.z)
+
+
+def test_topspin_dips_backspin_floats_and_sidespin_curves_left():
+    common = dict(speed=25.0, angle=5.0, height=1.0, max_bounces=1)
+    flat = flight("tennis", "hard", **common)
+    top = flight("tennis", "hard", spin_rpm=3000, spin_axis="topspin", **common)
+    back = flight("tennis", "hard", spin_rpm=3000, spin_axis="backspin", **common)
+    side = flight("tennis", "hard", spin_rpm=3000, spin_axis="sidespin", **common)
+    x = [float(r.bounces.position.x[0]) for r in (top, flat, back)]
+    assert x[0] < x[1] < x[2]
+    assert float(side.bounces.position.z[0]) < 0  # left of +x seen from above is -z
+    vacuum = flight("tennis", "hard", air_density=0.0, **common)
+    assert float(flat.bounces.position.x[0]) < float(vacuum.bounces.position.x[0])
+
+
+def test_many_balls_in_chunks_give_the_same_numbers_as_one_chunk():
+    rng = np.random.default_rng(11)
+    speed, rpm = rng.normal(45, 3, 23), rng.normal(2500, 400, 23)
+    calls = []
+    kw = dict(speed=speed, angle=-6.0, height=2.8, spin_rpm=rpm, max_bounces=3)
+    small = flight("tennis", "grass", chunk=5, progress=lambda d, n: calls.append((d, n)), **kw)
+    whole = flight("tennis", "grass", **kw)
+    assert calls == [(5, 23), (10, 23), (15, 23), (20, 23), (23, 23)]
+    np.testing.assert_array_equal(small.bounces.time, whole.bounces.time)
+    np.testing.assert_array_equal(small.final_position.array, whole.final_position.array)
+    one = flight("tennis", "grass", speed=speed[7], angle=-6.0, height=2.8, spin_rpm=rpm[7],
+                 max_bounces=3)  # fmt: skip
+    np.testing.assert_array_equal(whole[7].bounces.after.velocity, one.bounces.after.velocity)
+    assert whole.shape == (23,) and whole.bounces.time.shape == (23, 3)
+    assert whole.path_position.shape[1] == 0 and one.path_position.shape[-1] == 3
+
+
+def test_the_result_has_columns_rows_and_a_table():
+    f = flight("golf", "green", speed=60.0, angle=12.0, height=0.0214, spin_rpm=2800,
+               spin_axis="backspin")  # fmt: skip
+    assert f.shape == () and str(f.stop) == "rest"
+    cols = f.columns()
+    assert tuple(cols)[: len(f.column_names())] == f.column_names()
+    assert cols["bounce1_time"] == f.bounces.time[0] == f.flight_time
+    rows = f.bounce_rows()
+    assert len(rows) == int(f.bounce_count) and rows[0]["bounce"] == 1
+    assert "golf ball on green" in repr(f) and "rest at" in f.table()
+    assert f.apex_height > 10 and f.final_time > f.flight_time
+    d = f.to_dict()
+    assert d["ball"]["name"] == "golf" and isinstance(d["bounces"]["time"], list)
+    with pytest.raises(ValueError, match="one ball"):
+        flight("golf", "green", speed=[50.0, 60.0], angle=12.0).bounce_rows()
+
+
+def test_a_ball_that_settles_slides_and_rolls_to_rest_where_friction_says():
+    # dropped with no spin: it bounces in place and comes to rest where it fell
+    f = flight("soccer", "pitch", speed=0.0, angle=0.0, height=1.0)
+    assert str(f.stop) == "rest"
+    np.testing.assert_allclose([f.final_position.x, f.final_position.z], 0.0, atol=1e-12)
+    # with no rolling resistance and no time to stop, the run ends at t_stop, rolling
+    g = flight(BALLS["soccer"], GROUNDS["pitch"].replace(rolling=0.0), speed=5.0, angle=10.0,
+               t_stop=10.0)  # fmt: skip
+    assert str(g.stop) == "time" and float(g.final_time) == 10.0
+    assert float(g.final_velocity.x) > 0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "match"),
+    [
+        (dict(speed=-1.0, angle=0.0), ValueError, "speed must be >= 0"),
+        (dict(speed=[1.0, -2.0], angle=0.0), ValueError, r"first offending index 1"),
+        (dict(speed=10.0, angle=0.0, spin_rpm=100, spin_axis=[0, 0, 0]), ValueError,
+         "length of spin_axis"),
+        (dict(speed=10.0, angle=0.0, spin_axis="wobble"), ValueError, "spin_axis must be one"),
+        (dict(speed=10.0, angle=0.0, height=0.01), ValueError, "start on or above the ground"),
+        (dict(speed=10.0, angle=95.0), ValueError, "angle must be in"),
+        (dict(speed="fast", angle=0.0), TypeError, "speed must be a real number"),
+        (dict(speed=10.0, angle=0.0, dt=0.0), ValueError, "dt"),
+        (dict(speed=10.0, angle=0.0, max_bounces=0), ValueError, "max_bounces"),
+        (dict(speed=10.0, angle=0.0, t_stop=-1.0), ValueError, "t_stop"),
+        (dict(speed=10.0), ValueError, "give speed and angle"),
+        (dict(speed=10.0, angle=0.0, velocity=[1, 0, 0]), ValueError, "not both"),
+        (dict(velocity=[1, 0, 0], spin=[0, 0]), ValueError, "spin must be a 3-vector"),
+    ],
+)  # fmt: skip
+def test_bad_input_is_named(kwargs, error, match):
+    with pytest.raises(error, match=match):
+        flight("tennis", "hard", **kwargs)
+
+
+def test_bad_balls_and_grounds_are_named():
+    with pytest.raises(ValueError, match="ball must be one of"):
+        flight("cricket", "hard", speed=1.0, angle=0.0)
+    with pytest.raises(ValueError, match="ground must be one of"):
+        flight("tennis", "ice", speed=1.0, angle=0.0)
+    with pytest.raises(TypeError, match="ground must be a Ground"):
+        flight("tennis", 3, speed=1.0, angle=0.0)
+    with pytest.raises(ValueError, match="drag_coefficient must be >= 0"):
+        Ball("x", 0.1, 0.05, 0.03, drag_coefficient=-0.1)
+    with pytest.raises(ValueError, match="kappa must be in"):
+        GROUNDS["hard"].replace(kappa=1.5)
