@@ -21,6 +21,9 @@ from .model.compliance import (
     TangentialLaw,
     Walton,
 )
+from .model.fit import FitResult, fit
+from .model.fit_data import Bounces
+from .model.fit_drops import fit_drops
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.pair import PairImpact, solve_pair
 from .model.particle import ParticleImpact, solve_particle
@@ -38,6 +41,10 @@ from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 __version__ = "0.1.0"
 
 __all__ = [
+    "fit",
+    "fit_drops",
+    "Bounces",
+    "FitResult",
     "solve_pair",
     "PairImpact",
     "solve_sphere",
