@@ -11,13 +11,16 @@ from .model.contact import (
     NormalImpact,
 )
 from .model.dynamics import Simulation, simulate
+from .model.mindlin import Mindlin, TangentialSimulation
 
 __all__ = [
     "ContactLaw",
     "HertzContact",
     "HuntCrossleyContact",
     "LinearContact",
+    "Mindlin",
     "NormalImpact",
     "Simulation",
+    "TangentialSimulation",
     "simulate",
 ]

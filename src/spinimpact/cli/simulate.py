@@ -106,6 +106,46 @@ def _contact_law(o: dict[str, Any], radius: float) -> Any:
     )
 
 
+def _tangential_law(o: dict[str, Any]) -> Any:
+    """The tangential law the options describe (``None`` for ``--tangential none``)."""
+    from ..model.mindlin import Mindlin
+
+    if o["tangential"] == "none":
+        if o["stiffness_ratio"] is not None:
+            raise click.UsageError("--stiffness-ratio needs --tangential mindlin")
+        return None
+    if o["stiffness_ratio"] is not None:
+        return Mindlin(stiffness_ratio=o["stiffness_ratio"])
+    if o["contact"] != "hertz":
+        raise click.UsageError(
+            f"--tangential mindlin with --contact {o['contact']} needs --stiffness-ratio "
+            "(Poisson's ratio belongs to the hertz law)"
+        )
+    return Mindlin(poisson_ratio=o["poisson_ratio"] or _HERTZ["poisson_ratio"])
+
+
+def _print_tangential(sim: Any) -> None:
+    """The rebound with tangential compliance beside the rigid closed form."""
+    rigid = sim.rigid()
+    click.echo(f"Hertz-Mindlin impact with {sim.contact!r}, k_t/k_n = {sim.stiffness_ratio:.6g}")
+    click.echo(f"contact duration {sim.contact_duration * 1e3:.6g} ms, peak normal force "
+               f"{sim.peak_force:.6g} N, {sim.switches} stick/slip switches")  # fmt: skip
+    click.echo(f"{'':24s}{'compliant':>14s}{'rigid':>14s}")
+    rows = (("vx+ (m/s)", sim.after.vx, rigid.after.vx),
+            ("vy+ (m/s)", sim.after.vy, rigid.after.vy),
+            ("omega+ (rad/s)", sim.after.omega, rigid.after.omega),
+            ("beta = -u+/u-", sim.tangential_restitution, _beta(sim, rigid)))  # fmt: skip
+    for name, a, b in rows:
+        click.echo(f"{name:24s}{float(a):14.6g}{float(b):14.6g}")
+
+
+def _beta(sim: Any, rigid: Any) -> float:
+    b = sim.before
+    u0 = float(b.vx + sim.body.radius * b.omega)
+    u1 = float(rigid.after.vx + sim.body.radius * rigid.after.omega)
+    return -u1 / u0 if u0 != 0 else float("nan")
+
+
 @click.command("simulate")
 @body_options
 @incidence_options
@@ -155,6 +195,21 @@ def _contact_law(o: dict[str, Any], radius: float) -> Any:
 )
 @click.option("--target-kappa", type=float, default=None, help="Older name of --kappa.")
 @click.option("--rtol", type=float, default=1e-10, show_default=True, help="Integrator tolerance.")
+@click.option(
+    "--tangential",
+    type=click.Choice(["none", "mindlin"]),
+    default="none",
+    show_default=True,
+    help="Tangential compliance: none (a rigid contact point, as the paper) or mindlin "
+    "(a tangential spring k_t = 8 G* a with Coulomb slip).",
+)
+@click.option(
+    "--stiffness-ratio",
+    type=float,
+    default=None,
+    help="k_t/k_n of the mindlin spring, > 0 (default 2(1-nu)/(2-nu) from --poisson-ratio "
+    "with --contact hertz; needed with linear and hunt-crossley).",
+)
 @click.option("--plot", "plot_file", default=None, help="Write N(t), F(t) and the velocities here.")
 def simulate_command(plot_file: str | None, **o: Any) -> None:
     """Integrate one impact in time with a compliant contact law and compare it
@@ -164,8 +219,21 @@ def simulate_command(plot_file: str | None, **o: Any) -> None:
     fmt = (
         image_format(plot_file, "--plot") if plot_file else None
     )  # a bad name fails before the work
+    tangential = _tangential_law(o)
     body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
     law = _contact_law(o, float(body.radius))
+    if tangential is not None:
+        sim = simulate(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], contact=law,
+                       rtol=o["rtol"], tangential=tangential)  # fmt: skip
+        _print_tangential(sim)
+        if plot_file:
+            from ..io import atomic_path
+            from ..viz.tangential import plot_tangential
+
+            with atomic_path(plot_file) as tmp:
+                plot_tangential(sim).savefig(tmp, format=fmt, dpi=110)
+            click.echo(f"wrote {plot_file}")
+        return
     sim = simulate(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], contact=law, rtol=o["rtol"])
     from ..viz.report import print_simulation
 

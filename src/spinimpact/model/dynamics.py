@@ -116,7 +116,8 @@ def simulate(
     mu: float,
     contact: ContactLaw,
     rtol: float = 1e-10,
-) -> Simulation:
+    tangential=None,
+):
     r"""Integrate one impact in time with a compliant normal force and Coulomb friction.
 
     Parameters
@@ -132,10 +133,16 @@ def simulate(
     rtol : float
         Relative tolerance of the integrator, in ``[1e-13, 1e-3]``; errors against
         the rigid closed form shrink with it.
+    tangential : Mindlin, optional
+        A tangential compliance law (:class:`~spinimpact.model.mindlin.Mindlin`):
+        the contact then has a tangential spring capped by Coulomb friction, and
+        the result is a :class:`~spinimpact.model.mindlin.TangentialSimulation`.
+        ``None`` (default): no tangential compliance, as below.
 
     Returns
     -------
     Simulation
+        Or a :class:`~spinimpact.model.mindlin.TangentialSimulation` with ``tangential``.
 
     Raises
     ------
@@ -170,6 +177,11 @@ def simulate(
     >>> bool(abs(sim.after.vx - rigid.after.vx) < 1e-8)
     True
     """
+    if tangential is not None:
+        from .mindlin import simulate_tangential
+
+        return simulate_tangential(body, vx, vy, omega, mu=mu, contact=contact,
+                                   tangential=tangential, rtol=rtol)  # fmt: skip
     if not isinstance(contact, ContactLaw):
         raise TypeError(f"contact must be a spinimpact contact law, got {type(contact).__name__}")
     if not isinstance(body, Body):

@@ -1,0 +1,339 @@
+r"""Tangential compliance in time: a Mindlin spring with Coulomb slip at the contact.
+
+:func:`integrate_tangential` integrates one impact of a body on a plane (centre
+velocity ``(v_x, v_y)``, spin ``omega``) whose contact is compliant in both
+directions: the normal force is a power-law spring with Hunt-Crossley and/or
+viscous damping (the laws of :mod:`spinimpact.core.contact`),
+
+.. math:: N = \max\left(k \delta^n (1 + a \dot\delta) + c \dot\delta,\ 0\right),
+
+and the tangential force ``F`` is carried by a spring whose stiffness follows the
+elastic normal stiffness, ``k_t = r\, n k \delta^{n-1}``, with Coulomb's cap
+``|F| <= mu N``. For Hertz's law (``n = 3/2``, ``k = 4/3 E^* sqrt(R)``) and
+``r = 4 G^*/E^*`` this is Mindlin's no-slip stiffness ``k_t = 8 G^* a`` with
+``a = sqrt(R delta)`` (Mindlin 1949; Johnson 1985, sec. 7.2); for a sphere of one
+material on a rigid plane, or on a plane of the same material,
+``r = 2(1 - nu)/(2 - nu)``.
+
+The variant ("no-slip Mindlin, incremental, scaled on unloading")
+-----------------------------------------------------------------
+While the contact sticks the spring is loaded incrementally,
+``dF/dt = -k_t u`` (``u = v_x + R omega``, the velocity of the body's contact
+point), as DEM codes integrate it (the "Hertz-Mindlin no-slip" model of Di Renzo
+and Di Maio 2004); while the contact area shrinks (``dk_t/dt < 0``) the force is
+also scaled down with the stiffness, ``dF/dt = -k_t u + F (dk_t/dt)/k_t``, as
+Thornton and co-workers do for unloading. With this rule the quantity
+
+.. math:: E = T + U_n(\delta) + \frac{F^2}{2 k_t},
+
+(``T`` the kinetic energy, ``U_n = k delta^{n+1}/(n+1)`` the normal spring's
+energy) never increases: ``dE/dt = -F^2 |dk_t/dt|/(2 k_t^2)`` while sticking,
+less than that while slipping, minus the normal damping's power. A purely
+incremental rule (no scaling on unloading) gives
+``dE/dt = +F^2 |dk_t/dt| / (2 k_t^2)`` while unloading in stick and can return
+more energy than it stored; this is why the scaled variant is used. With a linear
+normal spring (``n = 1``) the stiffness is constant and the two coincide: the
+lumped two-spring model of Stronge (2000), conservative while sticking.
+
+While the contact slips, ``F = sigma mu N`` (``sigma = +-1``); slip ends when the
+force the spring would take in stick no longer exceeds the cap, i.e. when the
+interface slip velocity ``w = u - d xi/dt`` (``xi`` the spring's displacement)
+reaches zero. Both switches are ``solve_ivp`` events, located to the integrator's
+precision; the event functions are written without divisions by ``delta`` so
+that they stay finite at first touch and at separation.
+
+References
+----------
+.. [1] R. D. Mindlin, "Compliance of elastic bodies in contact", Journal of
+   Applied Mechanics 16 (1949) 259-268.
+.. [2] K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985).
+.. [3] A. Di Renzo, F. P. Di Maio, "Comparison of contact-force models for the
+   simulation of collisions in DEM-based granular flow codes", Chemical
+   Engineering Science 59 (2004) 525-541.
+.. [4] W. J. Stronge, *Impact Mechanics*, Cambridge University Press (2000).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from .compliance import mindlin_stiffness_ratio as one_material_ratio
+
+__all__ = ["TangentialRun", "integrate_tangential", "mindlin_stiffness_ratio"]
+
+#: Most stick/slip switches one impact may take before the run is refused.
+MAX_SEGMENTS = 20000
+
+
+def mindlin_stiffness_ratio(poisson_ratio, poisson_ratio_plane=None, youngs_ratio=None):
+    r"""Ratio ``r = k_t/k_n`` of Mindlin's no-slip tangential stiffness to the
+    Hertz normal contact stiffness, ``8 G^* a / (2 E^* a) = 4 G^*/E^*``.
+
+    Parameters
+    ----------
+    poisson_ratio : array_like
+        ``nu`` of the body.
+    poisson_ratio_plane : array_like, optional
+        ``nu`` of the plane; ``None``: a rigid plane (or, the same thing for this
+        ratio, a plane of the body's own material).
+    youngs_ratio : array_like, optional
+        ``E_body/E_plane`` when ``poisson_ratio_plane`` is given (``0``: rigid plane).
+
+    Notes
+    -----
+    .. math::
+
+        \frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}, \qquad
+        \frac{1}{G^*} = \frac{2-\nu_1}{G_1} + \frac{2-\nu_2}{G_2}, \qquad
+        G_i = \frac{E_i}{2(1+\nu_i)}
+
+    (Johnson 1985, sec. 7.2). One material, or a rigid plane:
+    ``r = 2(1-nu)/(2-nu)``.
+
+    Examples
+    --------
+    >>> round(float(mindlin_stiffness_ratio(0.23)), 6)
+    0.870056
+    >>> round(float(mindlin_stiffness_ratio(0.23, 0.23, 1.0)), 6)
+    0.870056
+    """
+    nu1 = np.asarray(poisson_ratio, dtype=float)
+    if poisson_ratio_plane is None:
+        return one_material_ratio(nu1)
+    nu2 = np.asarray(poisson_ratio_plane, dtype=float)
+    ratio = np.asarray(youngs_ratio, dtype=float)  # E1/E2; compliances in units of 1/E1
+    e_c = (1.0 - nu1**2) + (1.0 - nu2**2) * ratio
+    g_c = 2.0 * (2.0 - nu1) * (1.0 + nu1) + 2.0 * (2.0 - nu2) * (1.0 + nu2) * ratio
+    return 4.0 * e_c / g_c
+
+
+class TangentialRun(NamedTuple):
+    """One impact with tangential compliance sampled in time
+    (:func:`integrate_tangential`); the arrays share one length and every
+    stick/slip switch is a sample."""
+
+    t: np.ndarray  #: s
+    compression: np.ndarray  #: delta, m
+    vx: np.ndarray  #: m/s
+    vy: np.ndarray  #: m/s
+    omega: np.ndarray  #: rad/s
+    tau: np.ndarray  #: normal impulse, N s
+    tangential_impulse: np.ndarray  #: N s
+    normal_force: np.ndarray  #: N
+    tangential_force: np.ndarray  #: F, N
+    spring_displacement: np.ndarray  #: xi, m (the tangential spring's displacement)
+    slip: np.ndarray  #: interface slip velocity w, m/s (0 while sticking)
+    contact_velocity: np.ndarray  #: u = vx + R omega, m/s
+    stuck: np.ndarray  #: bool
+    energy: np.ndarray  #: T + U_n + F^2/(2 k_t), J (never increases)
+    switches: np.ndarray  #: times of the stick/slip switches, s
+    t0: float  #: end of compression, s
+    t1: float  #: separation, s
+    tau0: float  #: normal impulse at t0, N s
+    compression_work: float  #: work of N up to t0, J
+    newton_restitution: float
+    poisson_restitution: float
+    energetic_restitution: float
+
+
+def integrate_tangential(
+    mass: float, radius: float, inertia: float, mu: float, vx: float, vy: float, omega: float,
+    *, stiffness: float, exponent: float, alpha: float = 0.0, damping: float = 0.0,
+    stiffness_ratio: float, time_scale: float, rtol: float = 1e-10, samples: int = 400,
+) -> TangentialRun:  # fmt: skip
+    r"""Integrate one impact with Hertz(-type) normal and Mindlin tangential compliance.
+
+    Parameters
+    ----------
+    mass, radius, inertia : float
+        ``m`` in kg, contact radius ``R`` in m, ``J`` about the centre in kg m^2.
+    mu : float
+        Coulomb friction coefficient.
+    vx, vy, omega : float
+        Incidence, m/s (``vy < 0``) and rad/s.
+    stiffness, exponent : float
+        Normal spring ``k delta^n`` (N/m^n, ``n >= 1``).
+    alpha : float
+        Hunt-Crossley damping, s/m (``a = 3 alpha/2``).
+    damping : float
+        Viscous damping ``c``, N s/m; only with ``exponent == 1`` (a linear
+        spring-dashpot), where the force jumps to ``c |v_y|`` at first touch.
+    stiffness_ratio : float
+        ``r = k_t / (n k delta^{n-1})`` (:func:`mindlin_stiffness_ratio`).
+    time_scale : float
+        Order of the contact duration, s.
+    rtol : float
+        Relative tolerance of the integrator (DOP853).
+    samples : int
+        Evenly spaced output times, to which every switch is added.
+
+    Returns
+    -------
+    TangentialRun
+
+    Notes
+    -----
+    State ``(delta, v_x, v_y, omega, tau, f, W_n, F, xi)``; equations (2.4) with
+    the tangential force ``F``:
+    ``m dv_x/dt = F``, ``J domega/dt = R F``, ``m dv_y/dt = N``. See the module's
+    docstring for the stick and slip rules and the energy they keep from growing.
+    """
+    from scipy.integrate import solve_ivp
+
+    if damping > 0 and exponent != 1.0:
+        raise ValueError("viscous damping needs a linear spring (exponent 1)")
+    k, n, a, c, r = stiffness, exponent, 1.5 * alpha, damping, stiffness_ratio
+    speed = abs(vy)
+    vscale = abs(vx) + speed + abs(radius * omega)
+    fscale = mass * vscale / time_scale
+    p_scale = mass * vscale
+    atol = rtol * np.array([speed * time_scale, vscale, vscale, vscale / radius, p_scale,
+                            p_scale, p_scale * vscale, fscale, vscale * time_scale])  # fmt: skip
+
+    def normal(d, dd):
+        return k * math.copysign(abs(d) ** n, d) * (1.0 + a * dd) + c * dd
+
+    def kt(d):
+        return r * n * k * abs(d) ** (n - 1.0) if n != 1.0 else r * k
+
+    def rates(y):
+        """(N, dN/dt / k_t, [N/k_t] min(dk_t/dt, 0)/k_t): finite at delta = 0."""
+        d, dd = y[0], -y[2]
+        big_n = max(normal(d, dd), 0.0)
+        ddd = -big_n / mass
+        shape = dd * (1.0 + a * dd)
+        n_rate = (shape + (a * d + (c / k if n == 1.0 else 0.0)) * ddd / n) / r
+        unload = min((n - 1.0) / n * shape, 0.0) / r
+        return big_n, n_rate, unload
+
+    def rhs(_t, y, stick, sigma):
+        d, vx_, vy_, om, _tau, _f, _wn, force, _xi = y
+        big_n, n_rate, unload = rates(y)
+        u = vx_ + radius * om
+        if stick:
+            f_t = force
+            scale = min((n - 1.0) * (-vy_) / d, 0.0) if d > 0 and n != 1.0 else 0.0
+            df = -kt(d) * u + force * scale
+            dxi = u
+        else:
+            f_t = sigma * mu * big_n
+            df = 0.0
+            dxi = -sigma * mu * (n_rate - unload)
+        return [-vy_, f_t / mass, big_n / mass, f_t * radius / inertia, big_n, f_t, big_n * vy_,
+                df, dxi]  # fmt: skip
+
+    def compression_end(_t, y, stick, sigma):
+        return y[2]
+
+    compression_end.direction = 1
+
+    def separation(_t, y, stick, sigma):
+        big_n = normal(y[0], -y[2])
+        return math.copysign(abs(big_n) ** (1.0 / n), big_n)
+
+    separation.terminal = True
+    separation.direction = -1
+
+    def cap_up(_t, y, stick, sigma):  # F reaches +mu N
+        return mu * max(normal(y[0], -y[2]), 0.0) - y[7]
+
+    def cap_down(_t, y, stick, sigma):  # F reaches -mu N
+        return mu * max(normal(y[0], -y[2]), 0.0) + y[7]
+
+    def slip_end(_t, y, stick, sigma):  # -sigma w: the slip velocity reaches zero
+        _, n_rate, unload = rates(y)
+        u = y[1] + radius * y[3]
+        return -sigma * u + mu * (unload - n_rate)
+
+    for ev in (cap_up, cap_down, slip_end):
+        ev.terminal, ev.direction = True, -1
+
+    y = np.array([0.0, vx, vy, omega, 0.0, 0.0, 0.0, 0.0, 0.0])
+    u0 = vx + radius * omega
+    # first touch: the contact sticks if the cap opens at once (c > 0) or faster
+    # than the trial force grows (-sigma w(0+) < 0)
+    if u0 == 0.0 or c > 0.0:
+        stick, sigma = True, 0.0
+    else:
+        sigma = -math.copysign(1.0, u0)
+        stick = -sigma * u0 - mu * speed * (1.0 + a * speed) / r <= 0.0
+    if mu == 0.0:  # frictionless: F = 0 throughout (a slip phase that never ends)
+        stick, sigma = False, 1.0
+    t, t0, tau0, work0 = 0.0, math.nan, math.nan, math.nan
+    segments, switches = [], []
+    horizon = 1e3 * time_scale
+    while True:
+        events = [compression_end, separation]
+        events += [cap_up, cap_down] if stick else ([] if mu == 0.0 else [slip_end])
+        sol = solve_ivp(rhs, (t, t + horizon), y, method="DOP853", args=(stick, sigma),
+                        events=events, rtol=rtol, atol=atol, dense_output=True)  # fmt: skip
+        if sol.status == -1:
+            raise RuntimeError(f"contact integration failed: {sol.message}")
+        if sol.status == 0:
+            raise RuntimeError("contact did not end within 1000 time scales")
+        if sol.t_events[0].size and math.isnan(t0):
+            t0, y0 = float(sol.t_events[0][0]), sol.y_events[0][0]
+            tau0, work0 = float(y0[4]), float(y0[6])
+        if sol.t[-1] > t:
+            segments.append((t, float(sol.t[-1]), sol.sol, stick, sigma))
+        t, y = float(sol.t[-1]), sol.y[:, -1].copy()
+        if sol.t_events[1].size:
+            break
+        if len(segments) > MAX_SEGMENTS:
+            raise RuntimeError(f"more than {MAX_SEGMENTS} stick/slip switches in one impact")
+        switches.append(t)
+        big_n = max(normal(y[0], -y[2]), 0.0)
+        if stick:  # the cap is reached: slip opposite to the spring's pull
+            sigma = 1.0 if sol.t_events[2].size else -1.0
+            y[7] = sigma * mu * big_n
+        else:  # slip has stopped: the spring holds the cap force
+            y[7] = sigma * mu * big_n
+        stick = not stick
+    return _sampled(segments, t, y, t0, tau0, work0, switches, samples, mass, radius, inertia,
+                    mu, vy, normal, kt, k, n, rates)  # fmt: skip
+
+
+def _sampled(segments, t_end, y_end, t0, tau0, work0, switches, samples, mass, radius,
+             inertia, mu, vy, normal, kt, k, n, rates) -> TangentialRun:  # fmt: skip
+    """Sample the dense solutions of the segments, the switches and ``t0`` included."""
+    from .restitution import restitution_by_definition
+
+    marks = [x for x in (t0, *switches) if x == x]
+    times = np.union1d(np.linspace(0.0, t_end, samples), marks)
+    out = np.empty((9, times.size))
+    stuck = np.empty(times.size, dtype=bool)
+    sig = np.zeros(times.size)
+    for i, (start, end, dense, stick, sigma) in enumerate(segments):
+        last = i == len(segments) - 1
+        sel = (times >= start) & ((times < end) | last)
+        out[:, sel] = dense(times[sel])
+        stuck[sel] = stick
+        sig[sel] = sigma
+    out[:, -1] = y_end
+    delta, vxs, vys, oms, tau, f, _wn, force, xi = out
+    big_n = np.array([max(normal(d, -v), 0.0) for d, v in zip(delta, vys, strict=True)])
+    force = np.where(stuck, force, sig * mu * big_n)
+    u = vxs + radius * oms
+    w = np.zeros(times.size)
+    for j in np.flatnonzero(~stuck):
+        _, n_rate, unload = rates(out[:, j])
+        w[j] = u[j] + sig[j] * mu * (n_rate - unload)
+    stiff = np.array([kt(d) for d in delta])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        spring_energy = np.where(stiff > 0, force**2 / (2.0 * stiff), 0.0)
+    energy = (0.5 * mass * (vxs**2 + vys**2) + 0.5 * inertia * oms**2
+              + k * np.maximum(delta, 0.0) ** (n + 1.0) / (n + 1.0) + spring_energy)  # fmt: skip
+    tau1 = float(y_end[4])
+    kappas = restitution_by_definition(vy, float(y_end[2]), tau0, tau1, work0,
+                                       float(y_end[6]) - work0)  # fmt: skip
+    return TangentialRun(
+        t=times, compression=delta, vx=vxs, vy=vys, omega=oms, tau=tau, tangential_impulse=f,
+        normal_force=big_n, tangential_force=force, spring_displacement=xi, slip=w,
+        contact_velocity=u, stuck=stuck, energy=energy, switches=np.asarray(switches),
+        t0=float(t0), t1=float(t_end), tau0=float(tau0), compression_work=float(work0),
+        newton_restitution=float(kappas.newton), poisson_restitution=float(kappas.poisson),
+        energetic_restitution=float(kappas.energetic),
+    )  # fmt: skip

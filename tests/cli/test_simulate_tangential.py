@@ -1,0 +1,55 @@
+"""spinimpact simulate --tangential mindlin: output, figure, one-line errors."""
+
+import pytest
+
+from spinimpact.cli import main
+
+from .test_errors import assert_one_line, run_main
+
+KHARAZ = (
+    "simulate",
+    "--body",
+    "solid-sphere",
+    "--mass",
+    "2.618e-4",
+    "--radius",
+    "0.0025",
+    "--vx",
+    "1.334",
+    "--vy",
+    "-3.665",
+    "--omega",
+    "0",
+    "--mu",
+    "0.092",
+    "--kappa",
+    "0.98",
+    "--youngs-modulus",
+    "3.8e11",
+    "--poisson-ratio",
+    "0.23",
+)
+
+
+def test_mindlin_rows_and_plot(capsys, tmp_path):
+    png = tmp_path / "t.png"
+    main([*KHARAZ, "--tangential", "mindlin", "--plot", str(png)])
+    out = capsys.readouterr().out
+    assert "k_t/k_n = 0.870056" in out and "2 stick/slip switches" in out
+    row = next(x for x in out.splitlines() if x.startswith("vx+ (m/s)")).split()
+    assert float(row[2]) == pytest.approx(0.8290, abs=1e-3)  # compliant
+    assert float(row[3]) == pytest.approx(5 / 7 * 1.334, abs=1e-6)  # rigid: sticks
+    assert png.stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (("--stiffness-ratio", "2"), "--stiffness-ratio needs --tangential mindlin"),
+        (("--contact", "linear", "--tangential", "mindlin"), "needs --stiffness-ratio"),
+        (("--tangential", "mindlin", "--stiffness-ratio", "-1"), "stiffness_ratio must be in"),
+        (("--tangential", "mindlin", "--poisson-ratio", "0.6"), "poisson_ratio must be in"),
+    ],
+)
+def test_bad_options_are_one_line_errors(capsys, args, needle):
+    assert_one_line(*run_main(capsys, "simulate", *args), needle)
