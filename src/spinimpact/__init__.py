@@ -22,7 +22,7 @@ from .model.compliance import (
     Walton,
 )
 from .model.fit import FitResult, fit
-from .model.fit_data import Bounces
+from .model.fit_data import MeasuredBounces
 from .model.fit_drops import fit_drops
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.pair import PairImpact, solve_pair
@@ -43,7 +43,7 @@ __version__ = "0.1.0"
 __all__ = [
     "fit",
     "fit_drops",
-    "Bounces",
+    "MeasuredBounces",
     "FitResult",
     "solve_pair",
     "PairImpact",

@@ -12,7 +12,7 @@ from spinimpact import Body, TabulatedRestitution, solve
 from spinimpact.cli._common import jsonable
 from spinimpact.model import fit as fit_module
 from spinimpact.model.fit import FitWarning, fit
-from spinimpact.model.fit_data import Bounces
+from spinimpact.model.fit_data import MeasuredBounces
 from spinimpact.model.fit_models import make_model
 
 BALL = Body.solid_sphere(mass=0.058, radius=0.033)
@@ -32,7 +32,7 @@ def bounces(after, vx, vy, om, noise=0.0, seed=1, sigmas=True, scale=1.0):
               for a, s in zip((after.vx, after.vy, after.omega), SD, strict=True)]  # fmt: skip
     kw = dict(zip(("sigma_after_vx", "sigma_after_vy", "sigma_after_omega"), SD * scale,
                   strict=True)) if sigmas else {}  # fmt: skip
-    return Bounces(vx, vy, om, *values, **kw)
+    return MeasuredBounces(vx, vy, om, *values, **kw)
 
 
 def test_the_rigid_model_is_solve_on_all_bounces_at_once():
@@ -112,7 +112,7 @@ def test_missing_values_are_left_out():
     obs = data.observed.copy()
     obs[::3, 0] = np.nan
     obs[1::4, 2] = np.nan
-    holes = Bounces(vx, vy, om, *obs.T, *data.sigma.T)
+    holes = MeasuredBounces(vx, vy, om, *obs.T, *data.sigma.T)
     wrong = obs.copy()
     wrong[np.isnan(obs)] = 1e3
     res = fit(holes, BALL)
@@ -197,14 +197,14 @@ def test_bad_bounces_are_refused_by_name(kwargs, error, match):
     base = {"vx": VX, "vy": VY, "omega": OM, "after_vx": VX * 0.7, "after_vy": -VY * 0.6}
     base.update(kwargs)
     with pytest.raises(error, match=match):
-        Bounces(**base)
+        MeasuredBounces(**base)
 
 
 def test_unknown_and_missing_columns():
     with pytest.raises(ValueError, match="missing column.*omega"):
-        Bounces.from_columns({"vx": VX, "vy": VY, "after_vx": VX})
+        MeasuredBounces.from_columns({"vx": VX, "vy": VY, "after_vx": VX})
     with pytest.raises(ValueError, match="unknown column.*after_spin"):
-        Bounces.from_columns({"vx": VX, "vy": VY, "omega": OM, "after_spin": VX})
+        MeasuredBounces.from_columns({"vx": VX, "vy": VY, "omega": OM, "after_spin": VX})
 
 
 @pytest.mark.parametrize(
@@ -223,13 +223,13 @@ def test_unknown_and_missing_columns():
     ],
 )  # fmt: skip
 def test_bad_options_are_refused_by_name(kwargs, error, match):
-    data = Bounces(VX, VY, OM, after_vx=VX * 0.7, after_vy=-VY * 0.6)
+    data = MeasuredBounces(VX, VY, OM, after_vx=VX * 0.7, after_vy=-VY * 0.6)
     with pytest.raises(error, match=match):
         fit(data, BALL, **kwargs)
 
 
 def test_too_few_values_for_the_parameters():
-    data = Bounces(VX[:2], VY[:2], OM[:2], after_vx=[0.5, np.nan], after_vy=[np.nan, 1.0])
+    data = MeasuredBounces(VX[:2], VY[:2], OM[:2], after_vx=[0.5, np.nan], after_vy=[np.nan, 1.0])
     with pytest.raises(
         ValueError, match="too few usable values: 2 measured value.*need at least 3"
     ):

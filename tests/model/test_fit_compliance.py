@@ -9,7 +9,7 @@ import pytest
 from spinimpact import Body, solve
 from spinimpact.model import compliance
 from spinimpact.model.fit import fit
-from spinimpact.model.fit_data import Bounces
+from spinimpact.model.fit_data import MeasuredBounces
 from spinimpact.model.fit_models import TANGENTIAL
 
 BALL = Body.solid_sphere(mass=0.058, radius=0.033)
@@ -23,7 +23,7 @@ def measured(law, n=30, seed=2):
     imp = solve(BALL, vx, vy, 0.0, mu=0.3, kappa=0.7, tangential=law)
     after = (imp.after.vx, imp.after.vy, imp.after.omega)
     obs = [a + rng.normal(0.0, s, n) for a, s in zip(after, SD, strict=True)]
-    return Bounces(vx, vy, np.zeros(n), *obs, *SD), imp
+    return MeasuredBounces(vx, vy, np.zeros(n), *obs, *SD), imp
 
 
 def law(name, value):

@@ -14,7 +14,7 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.model.fit import fit
-from spinimpact.model.fit_data import Bounces
+from spinimpact.model.fit_data import MeasuredBounces
 
 BALL = Body.solid_sphere(mass=0.058, radius=0.033)
 TRUE = {"mu": 0.35, "kappa": 0.75}
@@ -39,7 +39,7 @@ def _data_sets(sigmas: bool, seed: int):
             (exact.vx, exact.vy, exact.omega), sd, strict=True)]  # fmt: skip
         kw = dict(zip(("sigma_after_vx", "sigma_after_vy", "sigma_after_omega"), sd,
                       strict=True)) if sigmas else {}  # fmt: skip
-        yield Bounces(vx, vy, om, *noisy, **kw)
+        yield MeasuredBounces(vx, vy, om, *noisy, **kw)
 
 
 @pytest.mark.parametrize("sigmas", [True, False], ids=["sigmas-given", "sigma-estimated"])

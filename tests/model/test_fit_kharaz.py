@@ -18,7 +18,7 @@ import numpy as np
 
 from spinimpact import Body
 from spinimpact.model.fit import fit
-from spinimpact.model.fit_data import Bounces
+from spinimpact.model.fit_data import MeasuredBounces
 
 #: (incidence angle deg, e_t): Di Renzo & Di Maio (2004) Fig. 6, as in MFiX DEM05.
 E_T = [(2.0275, 0.7938), (3.9282, 0.7450), (9.6304, 0.6728), (20.0845, 0.5964),
@@ -30,7 +30,7 @@ SPEED, RADIUS, MU = 3.9, 0.0025, 0.092
 BALL = Body.solid_sphere(mass=4000.0 * 4.0 / 3.0 * np.pi * RADIUS**3, radius=RADIUS)
 
 
-def kharaz(sigma_e_t=None) -> Bounces:
+def kharaz(sigma_e_t=None) -> MeasuredBounces:
     """The measured bounces; with ``sigma_e_t``, only the e_t points, with that standard
     deviation of e_t (the digitization's reading error of about 1 % of an axis from 0 to 1)."""
     et, om = np.array(E_T), np.array(OMEGA)
@@ -45,10 +45,10 @@ def kharaz(sigma_e_t=None) -> Bounces:
     sig = {}
     if sigma_e_t is not None:
         sig = {"sigma_after_vx": sigma_e_t * vx, "sigma_after_vy": 1.0, "sigma_after_omega": 1.0}
-    return Bounces(vx, vy, np.zeros(n), after_vx=after_vx, after_omega=after_omega, **sig)
+    return MeasuredBounces(vx, vy, np.zeros(n), after_vx=after_vx, after_omega=after_omega, **sig)
 
 
-def sliding_fit(data: Bounces):
+def sliding_fit(data: MeasuredBounces):
     """Fit every bounce, keep those the fit says slid throughout, fit them alone."""
     everything = fit(data, BALL, fixed={"kappa": 0.98})
     slid = everything.sliding

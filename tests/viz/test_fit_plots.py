@@ -8,7 +8,7 @@ import pytest
 
 from spinimpact import Body, solve
 from spinimpact.model.fit import fit
-from spinimpact.model.fit_data import Bounces
+from spinimpact.model.fit_data import MeasuredBounces
 from spinimpact.viz.fit import plot_corner, plot_fit
 
 pytest.importorskip("matplotlib")
@@ -25,7 +25,7 @@ def data(n=20, same_speed=False, omega_measured=True):
     after = solve(BALL, vx, vy, 0.0, mu=0.3, kappa=lambda v: 0.8 * (v / 3) ** -0.1).after
     om = after.omega + rng.normal(0, 3, n) if omega_measured else None
     sig = (0.05, 0.05, 3.0) if omega_measured else (0.05, 0.05, 1.0)
-    return Bounces(vx, vy, np.zeros(n), after.vx + rng.normal(0, 0.05, n),
+    return MeasuredBounces(vx, vy, np.zeros(n), after.vx + rng.normal(0, 0.05, n),
                    after.vy + rng.normal(0, 0.05, n), om, *sig)  # fmt: skip
 
 

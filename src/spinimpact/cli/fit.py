@@ -210,9 +210,9 @@ def fit_command(bounces: str, **o: Any) -> None:
 
 def _bounces(columns: dict[str, np.ndarray], o: dict[str, Any], fixed: dict[str, float]) -> Any:
     from ..model.fit import fit
-    from ..model.fit_data import Bounces
+    from ..model.fit_data import MeasuredBounces
 
-    data = Bounces.from_columns(columns)
+    data = MeasuredBounces.from_columns(columns)
     spin = np.any(data.omega != 0) or np.any(data.measured[:, 2])
     if o["radius"] is None:
         if spin:

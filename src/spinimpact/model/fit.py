@@ -17,7 +17,7 @@ import numpy as np
 
 from .._validation import setting
 from .body import Body
-from .fit_data import Bounces
+from .fit_data import MeasuredBounces
 from .fit_models import FitModel, make_model
 from .fit_profile import Problem, curvature, intervals, minimize, threshold
 from .fit_result import FitResult, FitWarning
@@ -25,7 +25,7 @@ from .fit_result import FitResult, FitWarning
 __all__ = ["fit", "FitResult", "FitWarning"]
 
 
-def _start(fm: FitModel, bounces: Bounces, given: Mapping[str, float]) -> np.ndarray:
+def _start(fm: FitModel, bounces: MeasuredBounces, given: Mapping[str, float]) -> np.ndarray:
     """Starting values from the data: restitution from the measured ``vy^+``, the body's
     gyration; ``mu`` is chosen afterwards by a scan (:func:`fit`)."""
     speed = -bounces.vy
@@ -70,7 +70,7 @@ def _fixed(fm: FitModel, fixed: Mapping[str, float] | None) -> dict[str, float]:
 
 
 def fit(
-    bounces: Bounces,
+    bounces: MeasuredBounces,
     body: Body,
     *,
     model: str = "rigid",
@@ -85,7 +85,7 @@ def fit(
 
     Parameters
     ----------
-    bounces : Bounces
+    bounces : MeasuredBounces
         Incidences, measured rebounds (any value may be missing) and, optionally,
         their standard deviations.
     body : Body
@@ -152,14 +152,12 @@ def fit(
     Examples
     --------
     >>> import numpy as np
-    >>> from spinimpact import Body, solve
-    >>> from spinimpact.model.fit import fit
-    >>> from spinimpact.model.fit_data import Bounces
+    >>> from spinimpact import Body, MeasuredBounces, fit, solve
     >>> ball = Body.solid_sphere(mass=0.06, radius=0.033)
     >>> vx = np.linspace(1.0, 12.0, 12); vy = np.full(12, -4.0); om = np.zeros(12)
     >>> true = solve(ball, vx, vy, om, mu=0.3, kappa=0.7).after
-    >>> data = Bounces(vx, vy, om, after_vx=true.vx, after_vy=true.vy, after_omega=true.omega,
-    ...                sigma_after_vx=0.05, sigma_after_vy=0.05, sigma_after_omega=2.0)
+    >>> data = MeasuredBounces(vx, vy, om, true.vx, true.vy, true.omega,
+    ...                        sigma_after_vx=0.05, sigma_after_vy=0.05, sigma_after_omega=2.0)
     >>> res = fit(data, ball)
     >>> round(res["mu"].estimate, 6), round(res["kappa"].estimate, 6)
     (0.3, 0.7)
@@ -168,8 +166,10 @@ def fit(
     >>> print(res["mu"])
     mu = 0.3 +- 0.0017 [0.2967, 0.3033]
     """
-    if not isinstance(bounces, Bounces):
-        raise TypeError(f"bounces must be a spinimpact.Bounces, got {type(bounces).__name__}")
+    if not isinstance(bounces, MeasuredBounces):
+        raise TypeError(
+            f"bounces must be a spinimpact.MeasuredBounces, got {type(bounces).__name__}"
+        )
     if isinstance(free_gyration, bool) is False:
         raise TypeError(f"free_gyration must be True or False, got {free_gyration!r}")
     conf = setting("confidence", confidence, low=0.5, rule="in (0.5, 1)")

@@ -18,7 +18,7 @@ import numpy as np
 
 from .._validation import as_real_array, check
 
-__all__ = ["Bounces", "QUANTITIES", "INCIDENCE", "SIGMAS"]
+__all__ = ["MeasuredBounces", "QUANTITIES", "INCIDENCE", "SIGMAS"]
 
 #: The measured rebound quantities, in the order of every ``(n, 3)`` array of a fit.
 QUANTITIES = ("after_vx", "after_vy", "after_omega")
@@ -55,7 +55,7 @@ def _column(name: str, value: Any, n: int | None, *, missing_ok: bool) -> np.nda
 
 
 @dataclass(frozen=True, eq=False)
-class Bounces:
+class MeasuredBounces:
     """Measured bounces: incidence, measured rebound (NaN where not measured), sigmas.
 
     Parameters
@@ -83,7 +83,7 @@ class Bounces:
 
     Examples
     --------
-    >>> b = Bounces(vx=[1.0, 2.0], vy=[-3.0, -3.0], omega=[0.0, 0.0],
+    >>> b = MeasuredBounces(vx=[1.0, 2.0], vy=[-3.0, -3.0], omega=[0.0, 0.0],
     ...             after_vx=[0.7, float("nan")], after_vy=[2.4, 2.4])
     >>> len(b), b.n_observations
     (2, 3)
@@ -138,8 +138,8 @@ class Bounces:
             object.__setattr__(self, name, v)
 
     @classmethod
-    def from_columns(cls, columns: Mapping[str, Any]) -> Bounces:
-        """Bounces from named columns (a CSV file read as a dict of arrays).
+    def from_columns(cls, columns: Mapping[str, Any]) -> MeasuredBounces:
+        """MeasuredBounces from named columns (a CSV file read as a dict of arrays).
 
         Parameters
         ----------
@@ -198,13 +198,15 @@ class Bounces:
         as ``vx`` (``atan2(vx, -vy)``)."""
         return np.degrees(np.arctan2(self.vx, -self.vy))
 
-    def select(self, rows: Any) -> Bounces:
+    def select(self, rows: Any) -> MeasuredBounces:
         """The bounces at ``rows`` (a boolean mask or indices), sigmas included."""
         picked = {k: getattr(self, k) for k in INCIDENCE + QUANTITIES + SIGMAS}
-        return Bounces(**{k: None if v is None else np.asarray(v)[rows] for k, v in picked.items()})
+        return MeasuredBounces(
+            **{k: None if v is None else np.asarray(v)[rows] for k, v in picked.items()}
+        )
 
     def __repr__(self) -> str:
         return (
-            f"Bounces({len(self)} bounces, {self.n_observations} measured values, "
+            f"MeasuredBounces({len(self)} bounces, {self.n_observations} measured values, "
             f"sigmas {'given' if self.sigma is not None else 'not given'})"
         )

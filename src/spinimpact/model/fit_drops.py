@@ -11,7 +11,7 @@ import numpy as np
 from .._validation import as_real_array, check, setting
 from .body import Body
 from .fit import fit
-from .fit_data import Bounces
+from .fit_data import MeasuredBounces
 from .fit_result import FitResult
 from .restitution import STANDARD_GRAVITY
 
@@ -106,6 +106,6 @@ def fit_drops(
         s = np.hypot(s1, (v1 / v0) * s0)
         sig = {"sigma_after_vx": 1.0, "sigma_after_vy": s, "sigma_after_omega": 1.0}
     zeros = np.zeros_like(v0)
-    data = Bounces(zeros, -v0, zeros, after_vy=v1, **sig)
+    data = MeasuredBounces(zeros, -v0, zeros, after_vy=v1, **sig)
     body = Body.solid_sphere(mass=1.0, radius=1.0)  # drops without spin: the body plays no part
     return fit(data, body, restitution=restitution, fixed={"mu": 0.0}, confidence=confidence)

@@ -20,7 +20,7 @@ from .. import core
 from .._validation import as_real_array, check
 from . import compliance
 from .body import Body
-from .fit_data import Bounces
+from .fit_data import MeasuredBounces
 from .impact import solve
 
 __all__ = ["Parameter", "FitModel", "make_model", "TANGENTIAL", "LAWS", "MU_INFINITY"]
@@ -102,7 +102,7 @@ class FitModel:
             return b
         return Body(mass=b.mass, radius=b.radius, gyration=p["gyration"], name=b.name)
 
-    def _compliant(self, p: dict[str, float], bounces: Bounces) -> Any:
+    def _compliant(self, p: dict[str, float], bounces: MeasuredBounces) -> Any:
         """:func:`~spinimpact.solve` under the compliance law, on all bounces at once."""
         cls, name = getattr(compliance, LAWS[self.tangential][0]), LAWS[self.tangential][1]
         law = cls(**{name: p[name]})
@@ -110,7 +110,7 @@ class FitModel:
         return solve(self._body(p), bounces.vx, bounces.vy, bounces.omega, mu=p["mu"],
                      kappa=kappa, tangential=law)  # fmt: skip
 
-    def predict(self, theta: np.ndarray, bounces: Bounces) -> np.ndarray:
+    def predict(self, theta: np.ndarray, bounces: MeasuredBounces) -> np.ndarray:
         """Predicted rebound of every bounce, shape ``(n, 3)``: ``vx^+, vy^+, omega^+``.
 
         The rigid model calls the kernel :func:`spinimpact.core.kinematics.rebound` that
@@ -126,7 +126,7 @@ class FitModel:
                                         self.zeta(p), p["mu"], kappa)  # fmt: skip
         return np.stack([vx1, vy1, om1], axis=-1)
 
-    def contact(self, theta: np.ndarray, bounces: Bounces) -> tuple[np.ndarray, np.ndarray]:
+    def contact(self, theta: np.ndarray, bounces: MeasuredBounces) -> tuple[np.ndarray, np.ndarray]:
         """Which bounces slide throughout at ``theta`` (regime ``slip``, eq. 4.15) and
         which stick (``stick-compression``, ``stick-restitution``; under a compliance law
         ``stick`` and ``slip-reversal``): only sliding bounces measure ``mu``; a sticking
@@ -152,7 +152,7 @@ def _knot_names(knots: np.ndarray) -> list[str]:
 
 def make_model(
     body: Body,
-    bounces: Bounces,
+    bounces: MeasuredBounces,
     *,
     tangential: str = "rigid",
     restitution: str | Sequence[float] = "constant",
@@ -165,7 +165,7 @@ def make_model(
     ----------
     body : Body
         The body (its radius converts spin to contact-point speed).
-    bounces : Bounces
+    bounces : MeasuredBounces
         The data (for the default reference speed of a power law).
     tangential : str
         One of :data:`TANGENTIAL`: ``"rigid"``, or a compliance law of

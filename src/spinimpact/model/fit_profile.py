@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .fit_data import Bounces
+from .fit_data import MeasuredBounces
 from .fit_models import MU_INFINITY, FitModel
 
 __all__ = ["Problem", "Intervals", "minimize", "jacobian", "curvature", "intervals", "threshold"]
@@ -26,7 +26,9 @@ __all__ = ["Problem", "Intervals", "minimize", "jacobian", "curvature", "interva
 class Problem:
     """Weighted residuals of a model on measured bounces, over the free parameters."""
 
-    def __init__(self, model: FitModel, bounces: Bounces, theta: np.ndarray, free: np.ndarray):
+    def __init__(
+        self, model: FitModel, bounces: MeasuredBounces, theta: np.ndarray, free: np.ndarray
+    ):
         self.model, self.bounces = model, bounces
         self.theta, self.free = np.array(theta, dtype=float), np.asarray(free, dtype=bool)
         self.mask = bounces.measured

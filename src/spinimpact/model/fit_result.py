@@ -83,7 +83,7 @@ class FitResult(Result):
     incidence_angle_deg : ndarray
         Incidence angle from the normal of each bounce, degrees.
     sliding, sticking : ndarray of bool
-        Bounces that slide throughout at the estimate (they determine ``mu``) and bounces
+        MeasuredBounces that slide throughout at the estimate (they determine ``mu``) and bounces
         whose contact sticks (they only bound ``mu`` from below); only bounces with a
         measured ``after_vx`` or ``after_omega`` count.
     n_sliding, n_sticking : int
@@ -101,7 +101,7 @@ class FitResult(Result):
         Gaussian log-likelihood at the estimate, ``AIC = 2k - 2 ln L`` and
         ``BIC = k ln N - 2 ln L`` (``k`` counts the estimated sigma when it is).
     n_bounces, n_observations : int
-        Bounces and measured values.
+        MeasuredBounces and measured values.
     converged : bool
         Whether the optimizer reported convergence.
     message : str
