@@ -18,6 +18,7 @@ from .model.body import Body
 from .model.compliance import (
     CompliantImpact,
     CompliantSphereImpact,
+    Stronge,
     TangentialLaw,
     Walton,
 )
@@ -55,6 +56,7 @@ __all__ = [
     "Body",
     "CompliantImpact",
     "CompliantSphereImpact",
+    "Stronge",
     "TangentialLaw",
     "Walton",
     "ConstantRestitution",

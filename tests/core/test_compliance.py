@@ -114,3 +114,96 @@ def test_walton_kernels_run_on_another_array_library():
     beta = cc.walton_restitution(slip, vy, zeta, mu, kappa, 0.3)
     ref = cc.walton_restitution(*(np.asarray(x) for x in (slip, vy, zeta, mu, kappa)), 0.3)
     np.testing.assert_array_equal(np.asarray(beta), ref)
+
+
+# -- Stronge's lumped-parameter compliance: the closed form against an integration in time --
+
+
+def _stronge_cases():
+    """(slip, vy, zeta, mu, kappa, ratio) over gross slip, stick then reversal, and many
+    stick/slip changes (stiff tangential springs), kappa from 0 to 1."""
+    rng = np.random.default_rng(7)
+    out = []
+    for k in range(120):
+        zeta = float(rng.choice([1.05, 2.0, 2.5, 3.0, 3.5, 5.0]))
+        mu = float(rng.uniform(0.05, 0.8))
+        kappa = float(rng.choice([0.0, 0.3, 0.6, 0.8, 0.98, 1.0]))
+        ratio = float(rng.choice([0.7, 0.87, 2.0, 8.0, 30.0]))
+        vy = -float(10 ** rng.uniform(-1, 1))
+        psi = float(10 ** rng.uniform(-1.5, 1.3))  # r |u/v| / mu: < 1 starts stuck
+        slip = (-1) ** k * psi * mu / ratio * abs(vy)
+        out.append((slip, vy, zeta, mu, kappa, ratio))
+    return out
+
+
+STRONGE = _stronge_cases()
+
+
+def test_stronge_closed_form_equals_the_integration_in_time():
+    ref = pytest.importorskip("tests.compliance_reference")
+    slip, vy, zeta, mu, kappa, ratio = (np.array(c) for c in zip(*STRONGE, strict=True))
+    got = cc.stronge_restitution(slip, vy, zeta, mu, kappa, ratio)
+    kinds = set()
+    for i, case in enumerate(STRONGE):
+        after, changes, rise = ref.integrate(*case)
+        # integrator tolerance rtol 1e-12: the two routes agree to 1e-9 of |c_n^-|
+        assert abs(got.slip_after[i] - after) <= 1e-9 * abs(case[1]), (case, after)
+        assert got.transitions[i] == changes, case
+        assert rise <= 1e-9 * 0.3 * case[0] ** 2 / case[2] + 1e-15, case  # energy never rises
+        kinds.add("slip" if changes == 0 else "one" if changes == 1 else "many")
+    assert kinds == {"slip", "one", "many"}
+    assert got.transitions.max() >= 4  # several stick/slip changes in one impact
+    assert np.any(got.restitution > 0) and np.any(got.restitution < 0)  # reversals and not
+
+
+def test_stronge_sliding_throughout_is_the_sliding_rebound():
+    slip, vy, zeta, mu, kappa = _cases(6000)
+    ratio = RNG.uniform(0.5, 20, slip.size)
+    got = cc.stronge_restitution(slip, vy, zeta, mu, kappa, ratio)
+    slid = (got.transitions == 0) & ~got.stuck & (slip != 0)
+    assert slid.sum() > 300
+    # Coulomb over all of tau_1: beta_slide. The rigid law takes it only where it is <= 0;
+    # the spring lets the contact point slide on a little past c_t = 0 as it unloads.
+    sliding = slip - np.sign(slip) * (1 + kappa) * zeta * mu * np.abs(vy)
+    np.testing.assert_allclose(got.slip_after[slid], sliding[slid], rtol=1e-12,
+                               atol=1e-13 * np.abs(slip).max())  # fmt: skip
+    rigid = impulse.rebound_slip(slip, vy, zeta, mu, kappa)
+    past = slid & (rigid != sliding)
+    assert past.any()  # reversed while sliding, by less than mu/(kappa r) |c_n^-| (the end)
+    assert np.all((-np.sign(slip) * sliding <= mu / (kappa * ratio) * np.abs(vy) + 1e-12)[past])
+    # energy: |beta| <= 1 everywhere (the spring ends relaxed, friction only dissipates)
+    beta = got.restitution[slip != 0]
+    assert np.all(np.abs(beta) <= 1 + 1e-12)
+    assert np.all(np.isnan(got.restitution[slip == 0])) and np.all(got.slip_after[slip == 0] == 0)
+    smooth = mu == 0
+    np.testing.assert_allclose(got.slip_after[smooth], slip[smooth], rtol=1e-15)  # u0/v*v
+
+
+def test_stronge_rigid_limit_approaches_the_rigid_law():
+    slip, vy, zeta, mu, kappa = (a[:40] for a in _cases())
+    rigid = impulse.rebound_slip(slip, vy, zeta, mu, kappa)
+    errors = []
+    for ratio in (1e1, 1e3, 1e5):
+        got = cc.stronge_restitution(slip, vy, zeta, mu, kappa, ratio)
+        err = np.abs(got.slip_after - rigid) / np.abs(vy)
+        errors.append(err.max())
+        if ratio > 10:
+            # what is left is the stuck spring's oscillation: its velocity amplitude is at
+            # most mu |c_n^-| Omega/r = mu |c_n^-| sqrt(zeta/r) (docs/compliance.md)
+            assert np.all(err <= mu * np.sqrt(zeta / ratio)), ratio
+    assert errors[2] < errors[1] < errors[0] / 10, errors
+    assert errors[2] < 1e-3, errors
+
+
+def test_stronge_depends_on_the_normalized_angle_and_frequency_ratio_only():
+    # scaling: u+/|v| depends on (psi1 = r u/(mu |v|), Omega^2 = zeta r, kappa) and mu/r
+    slip, vy, zeta, mu, kappa = (a[:500] for a in _cases())
+    ratio = RNG.uniform(0.6, 10, slip.size)
+    a = cc.stronge_restitution(slip, vy, zeta, mu, kappa, ratio)
+    b = cc.stronge_restitution(-3.0 * slip, 3.0 * vy, zeta, mu, kappa, ratio)  # mirror, scale
+    np.testing.assert_allclose(b.slip_after, -3.0 * a.slip_after, rtol=1e-9,
+                               atol=1e-11 * np.abs(vy).max())  # fmt: skip
+    # the same psi1 = r u/(mu |v|) and Omega^2 = zeta r, and r/mu: the same u+
+    c = cc.stronge_restitution(slip, vy, zeta / 2.0, 2.0 * mu, kappa, 2.0 * ratio)
+    np.testing.assert_allclose(c.slip_after, a.slip_after, rtol=1e-9,
+                               atol=1e-11 * np.abs(vy).max())  # fmt: skip

@@ -14,6 +14,7 @@ from spinimpact import (
     CompliantSphereImpact,
     State,
     State3,
+    Stronge,
     Surface,
     Walton,
     solve,
@@ -185,3 +186,64 @@ def test_bad_input_through_the_law_is_named_as_in_solve():
     with pytest.raises(ValueError, match="normal velocity must be < 0"):
         solve_sphere(ball, [1.0, 1.0, 0.0], [0.0, 0.0, 0.0], mu=0.2, kappa=0.5,
                      tangential=Walton(0.1))  # fmt: skip
+
+
+# -- Stronge -----------------------------------------------------------------------------
+
+
+def test_stronge_through_solve_energy_regimes_and_its_rigid_limit():
+    c = random_cases(400, seed=21)
+    args = (_body(c), c["vx"], c["vy"], c["omega"])
+    rigid = solve(*args, mu=c["mu"], kappa=c["kappa"])
+    soft = solve(*args, mu=c["mu"], kappa=c["kappa"], tangential=Stronge(poisson_ratio=0.3))
+    assert {"slip", "stick", "slip-reversal", "no-slip", "frictionless"} <= set(soft.regime)
+    assert np.all(soft.dissipated_energy >= -1e-12 * soft.kinetic_energy_before)
+    np.testing.assert_array_equal(soft.after.vy, rigid.after.vy)
+    # the friction impulse moves the centre and the spin as the rigid law's does
+    m = np.asarray(_body(c).mass)
+    err = np.abs(soft.after.vx - (c["vx"] + soft.tangential_impulse / m)) / _speed_scale(c)
+    assert err.max() < 1e-13
+    ratio = 1e5
+    stiff = solve(*args, mu=c["mu"], kappa=c["kappa"],
+                  tangential=Stronge(stiffness_ratio=ratio))  # fmt: skip
+    bound = c["mu"] * np.abs(c["vy"]) * np.sqrt(c["zeta"] / ratio)  # docs/compliance.md
+    assert np.all(np.abs(stiff.slip_after - rigid.slip_after) <= bound + 1e-13 * _speed_scale(c))
+
+
+def test_stronge_sphere_in_a_plane_is_the_2d_solve():
+    c = random_cases(300, seed=22)
+    body, law = _body(c), Stronge(stiffness_ratio=2.5)
+    flat = solve(body, c["vx"], c["vy"], c["omega"], mu=c["mu"], kappa=c["kappa"], tangential=law)
+    zero = np.zeros_like(c["vx"])
+    sphere = solve_sphere(body, np.stack([c["vx"], c["vy"], zero], -1),
+                          np.stack([zero, zero, c["omega"]], -1), mu=c["mu"], kappa=c["kappa"],
+                          tangential=law)  # fmt: skip
+    scale = _speed_scale(c)
+    assert np.max(np.abs(sphere.after.vx - flat.after.vx) / scale) < 1e-13
+    assert np.max(np.abs((sphere.after.wz - flat.after.omega) * c["radius"]) / scale) < 1e-13
+    same = np.isfinite(flat.tangential_restitution)
+    beta3, beta2 = sphere.tangential_restitution[same], flat.tangential_restitution[same]
+    np.testing.assert_allclose(beta3, beta2, rtol=1e-9, atol=1e-12)
+    assert np.array_equal(sphere.regime, flat.regime)
+
+
+def test_stronge_parameters():
+    law = Stronge(poisson_ratio=0.25)
+    assert law.stiffness_ratio == pytest.approx(1.5 / 1.75, rel=1e-15)
+    assert law.to_dict() == {"law": "stronge", "poisson_ratio": 0.25,
+                             "stiffness_ratio": law.stiffness_ratio}  # fmt: skip
+    assert repr(law) == "Stronge(poisson_ratio=0.25)"
+    assert repr(Stronge(stiffness_ratio=2.0)) == "Stronge(stiffness_ratio=2.0)"
+    assert float(law.frequency_ratio(3.5)) == pytest.approx(np.sqrt(3.5 * 1.5 / 1.75))
+    for kwargs, error, message in [
+        ({}, TypeError, "one of poisson_ratio and stiffness_ratio"),
+        ({"poisson_ratio": 0.3, "stiffness_ratio": 1.0}, TypeError, "one of"),
+        ({"poisson_ratio": 0.6}, ValueError, r"poisson_ratio must be in \(-1, 0.5\], got 0.6"),
+        ({"poisson_ratio": -1.0}, ValueError, "poisson_ratio must be in"),
+        ({"poisson_ratio": "0.3"}, TypeError, "poisson_ratio must be a real number"),
+        ({"stiffness_ratio": 0.0}, ValueError, "stiffness_ratio must be in"),
+        ({"stiffness_ratio": -2.0}, ValueError, "stiffness_ratio must be in"),
+        ({"stiffness_ratio": float("inf")}, ValueError, "stiffness_ratio must be finite"),
+    ]:
+        with pytest.raises(error, match=message):
+            Stronge(**kwargs)

@@ -53,13 +53,16 @@ from __future__ import annotations
 from typing import Any, NamedTuple
 
 from ._xp import arrays, quiet
+from .stronge import StrongeRebound, stronge_restitution
 
 __all__ = [
     "MawAngles",
+    "StrongeRebound",
     "maw_angles",
     "mindlin_stiffness_ratio",
     "sliding_restitution",
     "slip_after_restitution",
+    "stronge_restitution",
     "tangential_impulse_of",
     "walton_restitution",
     "walton_slip",

@@ -33,7 +33,7 @@ from .compliant import (
     solve_sphere_compliant,
 )
 
-__all__ = ["TangentialLaw", "Walton", "CompliantImpact", "CompliantSphereImpact"]
+__all__ = ["TangentialLaw", "Walton", "Stronge", "CompliantImpact", "CompliantSphereImpact"]
 
 
 def _number(name: str, value: Any, low: float, high: float, rule: str) -> float:
@@ -98,3 +98,75 @@ class Walton(TangentialLaw):
 
     def __repr__(self) -> str:
         return f"Walton(beta0={self.beta0!r})"
+
+
+@dataclass(frozen=True)
+class Stronge(TangentialLaw):
+    """Stronge's lumped-parameter tangential compliance: normal and tangential springs at
+    the contact, Coulomb slip, stick while the tangential spring holds.
+
+    Give one of the two parameters.
+
+    Parameters
+    ----------
+    poisson_ratio : float, optional
+        Poisson's ratio ``nu`` in ``(-1, 0.5]``; the stiffness ratio is then Mindlin's
+        ``k_t/k_n = 2(1 - nu)/(2 - nu)`` (``nu = 0.23``, aluminium oxide: 0.8701).
+    stiffness_ratio : float, optional
+        ``k_t/k_n > 0`` directly (large values approach the rigid law).
+
+    Notes
+    -----
+    Linear springs, as in Stronge's model: the normal one unloads with stiffness
+    ``k_n/kappa^2``, so ``kappa`` is Stronge's energetic coefficient (with ``W_tn = 0``
+    also Newton's and Poisson's). In stick the tangential spring oscillates at
+    ``Omega = sqrt(zeta k_t/k_n)`` times the normal frequency; the impact is solved
+    piecewise in closed form (:func:`spinimpact.core.compliance.stronge_restitution`), for
+    any number of stick/slip changes. It slides throughout when Maw et al.'s normalized
+    incidence angle is large, and then gives the rigid law's sliding rebound exactly.
+
+    Examples
+    --------
+    >>> from spinimpact import Body, Stronge, solve
+    >>> law = Stronge(poisson_ratio=0.23)
+    >>> round(law.stiffness_ratio, 6)
+    0.870056
+    >>> imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.5,
+    ...             kappa=0.8, tangential=law)
+    >>> str(imp.regime), bool(imp.tangential_restitution > 0)
+    ('slip-reversal', True)
+    """
+
+    poisson_ratio: float | None = None
+    stiffness_ratio: float | None = None
+    name: ClassVar[str] = "stronge"
+
+    def __post_init__(self) -> None:
+        nu, ratio = self.poisson_ratio, self.stiffness_ratio
+        if (nu is None) == (ratio is None):
+            raise TypeError("Stronge takes one of poisson_ratio and stiffness_ratio, "
+                            f"got poisson_ratio={nu!r}, stiffness_ratio={ratio!r}")  # fmt: skip
+        if nu is not None:
+            nu = scalar("poisson_ratio", nu)
+            if not -1.0 < nu <= 0.5:
+                raise ValueError(f"poisson_ratio must be in (-1, 0.5], got {nu!r}")
+            object.__setattr__(self, "poisson_ratio", nu)
+            ratio = float(kernels.mindlin_stiffness_ratio(nu))
+        else:
+            ratio = _number("stiffness_ratio", ratio, 0.0, 1e12, "in (0, 1e12]")
+            if ratio == 0.0:
+                raise ValueError("stiffness_ratio must be in (0, 1e12], got 0.0")
+        object.__setattr__(self, "stiffness_ratio", ratio)
+
+    def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
+        out = kernels.stronge_restitution(slip, vy, zeta, mu, kappa, self.stiffness_ratio)
+        return out.slip_after, out.stuck
+
+    def frequency_ratio(self, zeta: Any) -> Any:
+        """``Omega = sqrt(zeta k_t/k_n)``: the tangential over the normal frequency."""
+        return (zeta * self.stiffness_ratio) ** 0.5
+
+    def __repr__(self) -> str:
+        if self.poisson_ratio is not None:
+            return f"Stronge(poisson_ratio={self.poisson_ratio!r})"
+        return f"Stronge(stiffness_ratio={self.stiffness_ratio!r})"
