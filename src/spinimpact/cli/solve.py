@@ -9,8 +9,17 @@ from typing import Any
 
 import click
 
+from ..model.impact import solve
 from ..model.particle import ParticleImpact, solve_particle
-from ._common import body_options, incidence_options, jsonable, solve_options, surface_options
+from ._common import (
+    body_options,
+    incidence_options,
+    jsonable,
+    make_body,
+    solve_options,
+    surface_options,
+)
+from ._compliance import print_compliant, tangential_law, tangential_options
 
 __all__ = ["solve_command", "report_command"]
 
@@ -24,6 +33,7 @@ def _particle(o: dict[str, Any]) -> ParticleImpact:
 @body_options
 @incidence_options
 @surface_options
+@tangential_options
 @click.option(
     "--json",
     "as_json",
@@ -44,7 +54,20 @@ def solve_command(as_json: bool, **options: Any) -> None:
       4.3, 3.6); rebound (eqs. 3.4, 4.13, 4.16); energy (eqs. 5.1-5.10); works
       (eqs. 6.1-6.11, ratio 6.15-6.19); mu_hat = f1/tau1 (eqs. 7.4, 7.7-7.9);
       least kinetic energy (eqs. 8.1-8.6); Whittaker's particle (eq. 8.7).
+      --tangential walton|stronge: the contact point's tangential restitution
+      beta = -u+/u- of Walton's or Stronge's law (docs/compliance.md).
     """
+    law = tangential_law(options)
+    if law is not None:
+        o = options
+        body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
+        soft = solve(body, o["vx"], o["vy"], o["omega"], mu=o["mu"], kappa=o["kappa"],
+                     tangential=law)  # fmt: skip
+        if as_json:
+            click.echo(json.dumps(jsonable(soft.to_dict()), indent=2))
+        else:
+            print_compliant(soft)
+        return
     imp = solve_options(options)
     if as_json:
         click.echo(json.dumps(jsonable(imp.to_dict()), indent=2))

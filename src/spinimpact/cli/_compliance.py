@@ -1,0 +1,99 @@
+"""The tangential compliance options (``--tangential``, ``--beta0``, ``--poisson-ratio``,
+``--stiffness-ratio``) and the plain-text report of a :class:`~spinimpact.CompliantImpact`."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import click
+
+from ..model.compliance import CompliantImpact, Stronge, TangentialLaw, Walton
+
+__all__ = ["tangential_options", "tangential_law", "print_compliant"]
+
+
+def tangential_options(function: Callable) -> Callable:
+    """Add the tangential compliance options to a command."""
+    options = [
+        click.option(
+            "--tangential",
+            type=click.Choice(["rigid", "walton", "stronge"]),
+            default="rigid",
+            show_default=True,
+            help="Tangential law: the rigid law (the contact point leaves at rest when it "
+            "sticks), Walton's three-parameter model (--beta0) or Stronge's lumped "
+            "compliance (--poisson-ratio or --stiffness-ratio). See docs/compliance.md.",
+        ),
+        click.option(
+            "--beta0",
+            type=float,
+            default=None,
+            help="Walton: tangential restitution of sticking impacts, in [-1, 1].",
+        ),
+        click.option(
+            "--poisson-ratio",
+            type=float,
+            default=None,
+            help="Stronge: Poisson's ratio in (-1, 0.5]; k_t/k_n = 2(1-nu)/(2-nu) (Mindlin).",
+        ),
+        click.option(
+            "--stiffness-ratio",
+            type=float,
+            default=None,
+            help="Stronge: tangential over normal contact stiffness k_t/k_n > 0.",
+        ),
+    ]
+    for option in reversed(options):
+        function = option(function)
+    return function
+
+
+def tangential_law(o: dict[str, Any]) -> TangentialLaw | None:
+    """The law the options name (``None`` for the rigid law).
+
+    Raises
+    ------
+    click.UsageError
+        For a parameter of another law, or a law without its parameter.
+    ValueError, TypeError
+        From the law, for a parameter out of range.
+    """
+    kind, beta0 = o["tangential"], o["beta0"]
+    nu, ratio = o["poisson_ratio"], o["stiffness_ratio"]
+    if kind != "walton" and beta0 is not None:
+        raise click.UsageError("--beta0 applies to --tangential walton only")
+    if kind != "stronge" and (nu is not None or ratio is not None):
+        which = "--poisson-ratio" if nu is not None else "--stiffness-ratio"
+        raise click.UsageError(f"{which} applies to --tangential stronge only")
+    if kind == "walton":
+        if beta0 is None:
+            raise click.UsageError("--tangential walton needs --beta0 (in [-1, 1])")
+        return Walton(beta0)
+    if kind == "stronge":
+        if (nu is None) == (ratio is None):
+            raise click.UsageError(
+                "--tangential stronge needs one of --poisson-ratio and --stiffness-ratio"
+            )
+        return Stronge(poisson_ratio=nu) if nu is not None else Stronge(stiffness_ratio=ratio)
+    return None
+
+
+def print_compliant(imp: CompliantImpact) -> None:
+    """A plain-text report of one impact under a tangential compliance law."""
+    b, a = imp.before, imp.after
+    rows = [
+        ("law", repr(imp.law)),
+        ("regime", str(imp.regime)),
+        ("tangential restitution beta = -u+/u-", f"{float(imp.tangential_restitution):.6g}"),
+        ("centre e_t = vx+/vx-", f"{float(imp.centre_tangential_restitution):.6g}"),
+        ("before vx, vy (m/s), omega (rad/s)", f"{b.vx:.6g}, {b.vy:.6g}, {b.omega:.6g}"),
+        ("after vx, vy (m/s), omega (rad/s)", f"{a.vx:.6g}, {a.vy:.6g}, {a.omega:.6g}"),
+        ("slip u before, after (m/s)", f"{imp.slip_before:.6g}, {imp.slip_after:.6g}"),
+        ("friction impulse f1 (N s)", f"{imp.tangential_impulse:.6g}"),
+        ("dissipated energy (J)", f"{imp.dissipated_energy:.6g} "
+                                  f"({100 * float(imp.dissipated_fraction):.4g} %)"),
+    ]  # fmt: skip
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        click.echo(f"{key:<{width}}  {value}")
