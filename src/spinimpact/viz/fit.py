@@ -121,7 +121,8 @@ def _title(res: FitResult) -> str:
             parts.append(f"{symbol(n)} $\\geq$ {e.low:.3g}")
         else:
             parts.append(f"{symbol(n)} = {e.estimate:.3g} [{e.low:.3g}, {e.high:.3g}]")
-    return f"{res.model}: " + ", ".join(parts) + f" ({100 * res.confidence:g} %)"
+    held = "".join(f"; {symbol(n)} = {v:.4g} held" for n, v in res.fixed.items())
+    return f"{res.model}: " + ", ".join(parts) + f" ({100 * res.confidence:g} %){held}"
 
 
 def plot_corner(res: FitResult) -> Figure:
