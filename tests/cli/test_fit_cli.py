@@ -129,3 +129,11 @@ def test_a_fit_that_does_not_converge_is_an_error(tmp_path, capsys, monkeypatch)
     stall_the_optimizer(monkeypatch)
     line = run_main(capsys, "fit", bounce_file(tmp_path), "--radius", "0.033")
     assert "did not converge" in line
+
+
+def test_a_compliance_model_and_the_goodness_of_fit(tmp_path, capsys):
+    src = bounce_file(tmp_path, sigmas=True, missing=False)
+    main(["fit", str(src), "--radius", "0.033", "--model", "walton"])
+    out = capsys.readouterr().out
+    assert "walton" in out and "beta0" in out
+    assert "goodness of fit: p = " in out and "does not explain" not in out

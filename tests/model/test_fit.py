@@ -236,3 +236,13 @@ def test_too_few_values_for_the_parameters():
         fit(data, BALL)
     with pytest.raises(TypeError, match="bounces must be"):
         fit({"vx": VX}, BALL)
+
+
+def test_the_p_value_flags_sigmas_that_are_too_small():
+    vx, vy, om = incidences(40)
+    after = solve(BALL, vx, vy, om, mu=0.3, kappa=0.7).after
+    honest = fit(bounces(after, vx, vy, om, noise=1.0), BALL)
+    assert 0.001 < honest.p_value
+    noisy = fit(bounces(after, vx, vy, om, noise=5.0), BALL)  # sigmas claim 5x too little
+    assert noisy.p_value < 1e-6
+    assert np.isnan(fit(bounces(after, vx, vy, om, noise=1.0, sigmas=False), BALL).p_value)

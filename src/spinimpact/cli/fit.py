@@ -142,6 +142,11 @@ def _print(res: Any) -> None:
                        f"{res.dof} degrees of freedom ({sig})"))  # fmt: skip
     console.print(Text(f"chi2 = {res.chi2:.4g}, reduced chi2 = {res.reduced_chi2:.4g}, "
                        f"AIC = {res.aic:.5g}, BIC = {res.bic:.5g}"))  # fmt: skip
+    if res.sigma_given:
+        note = ""
+        if res.p_value < 1e-3:
+            note = ": the model does not explain the data within the given sigmas"
+        console.print(Text(f"goodness of fit: p = {res.p_value:.3g}{note}"))
     if res.n_sliding or res.n_sticking:
         console.print(Text(f"friction: {res.identifiability}"))
 

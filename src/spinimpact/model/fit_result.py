@@ -174,6 +174,17 @@ class FitResult(Result):
             text += f"; the data only bound mu: mu >= {self['mu'].low:.4g} (one-sided)"
         return text
 
+    @property
+    def p_value(self) -> float:
+        """Probability of a ``chi2`` at least this large if the model and the given sigmas
+        were right (``chi2`` distribution with ``dof`` degrees of freedom); NaN when the
+        sigmas were estimated (the goodness of fit is then not testable)."""
+        if not self.sigma_given or self.dof < 1:
+            return float("nan")
+        from scipy.special import chdtrc
+
+        return float(chdtrc(self.dof, self.chi2))
+
     def to_dict(self) -> dict[str, Any]:
         """Every field as plain Python values (for JSON; ``inf`` stays a float)."""
         out = super().to_dict()
@@ -181,6 +192,7 @@ class FitResult(Result):
                            for k, (v, r) in self.profiles.items()}  # fmt: skip
         out["names"] = list(self.names)
         out["parameters"] = {n: vars(self[n]) for n in self.names}
+        out["p_value"] = self.p_value
         return out
 
     def columns(self) -> dict[str, np.ndarray]:
