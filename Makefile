@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 BASE   := $(VENV)/.installed-base
 
-.PHONY: demo test bench lint images clean
+.PHONY: demo test bench lint images validation clean
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -37,6 +37,10 @@ images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(PY) docs/scripts/engines.py docs/images/engines.png
 	$(VENV)/bin/spinimpact planar --body rod --angle-deg 45 --mu 0.3 --kappa 0.8 --plot docs/images/routh_planar.png --dpi 80 > /dev/null
 	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot docs/images/planar_map.png --resolution 300 --dpi 80 > /dev/null
+
+validation: $(STAMP)  ## every model against Kharaz et al. (2001); the Chung & Ooi (2011) tests
+	$(PY) -m benchmarks.validation kharaz
+	for t in 1 2 3 4 5 6; do $(PY) -m benchmarks.validation chung-ooi --test $$t || exit 1; done
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check src tests

@@ -46,6 +46,7 @@ def test_mindlin_rows_and_plot(capsys, tmp_path):
     ("args", "needle"),
     [
         (("--stiffness-ratio", "2"), "--stiffness-ratio needs --tangential mindlin"),
+        (("--spring", "total"), "--spring needs --tangential mindlin"),
         (("--contact", "linear", "--tangential", "mindlin"), "needs --stiffness-ratio"),
         (("--tangential", "mindlin", "--stiffness-ratio", "-1"), "stiffness_ratio must be in"),
         (("--tangential", "mindlin", "--poisson-ratio", "0.6"), "poisson_ratio must be in"),
@@ -53,3 +54,11 @@ def test_mindlin_rows_and_plot(capsys, tmp_path):
 )
 def test_bad_options_are_one_line_errors(capsys, args, needle):
     assert_one_line(*run_main(capsys, "simulate", *args), needle)
+
+
+def test_spring_rule_reaches_the_law(capsys):
+    main(
+        [*KHARAZ, "--tangential", "mindlin", "--spring", "total", "--vx", "0.136", "--vy", "-3.898"]
+    )
+    row = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("vx+ (m/s)"))
+    assert float(row.split()[2]) / 0.136 > 0.99  # the total rule at 2 degrees: e_t near 1

@@ -63,6 +63,7 @@ def test_result_fields_and_columns():
         "law": "Mindlin",
         "poisson_ratio": None,
         "stiffness_ratio": None,
+        "spring": "scaled",
     }
     # the impulse-momentum bookkeeping: vx+ - vx- = f/m
     assert float(sim.after.vx - sim.before.vx) == pytest.approx(
@@ -94,6 +95,10 @@ def test_bad_input():
         Mindlin(poisson_ratio=0.3, stiffness_ratio=1.0)
     with pytest.raises(TypeError):
         Mindlin(poisson_ratio="0.3")
+    with pytest.raises(ValueError, match="spring must be one of"):
+        Mindlin(spring="plastic")
+    with pytest.raises(TypeError, match="spring must be one of"):
+        Mindlin(spring=1)
     with pytest.raises(TypeError, match="tangential must be a Mindlin law"):
         simulate(BALL, 1.0, -3.0, 0.0, mu=0.1, contact=HERTZ, tangential="mindlin")
     with pytest.raises(ValueError, match="vy"):

@@ -111,17 +111,21 @@ def _tangential_law(o: dict[str, Any]) -> Any:
     from ..model.mindlin import Mindlin
 
     if o["tangential"] == "none":
-        if o["stiffness_ratio"] is not None:
-            raise click.UsageError("--stiffness-ratio needs --tangential mindlin")
+        for name in ("stiffness_ratio", "spring"):
+            if o[name] is not None:
+                flag = "--" + name.replace("_", "-")
+                raise click.UsageError(f"{flag} needs --tangential mindlin")
         return None
+    spring = o["spring"] or "scaled"
     if o["stiffness_ratio"] is not None:
-        return Mindlin(stiffness_ratio=o["stiffness_ratio"])
+        return Mindlin(stiffness_ratio=o["stiffness_ratio"], spring=spring)
     if o["contact"] != "hertz":
         raise click.UsageError(
             f"--tangential mindlin with --contact {o['contact']} needs --stiffness-ratio "
             "(Poisson's ratio belongs to the hertz law)"
         )
-    return Mindlin(poisson_ratio=o["poisson_ratio"] or _HERTZ["poisson_ratio"])
+    nu = _HERTZ["poisson_ratio"] if o["poisson_ratio"] is None else o["poisson_ratio"]
+    return Mindlin(poisson_ratio=nu, spring=spring)
 
 
 def _print_tangential(sim: Any) -> None:
@@ -209,6 +213,13 @@ def _beta(sim: Any, rigid: Any) -> float:
     default=None,
     help="k_t/k_n of the mindlin spring, > 0 (default 2(1-nu)/(2-nu) from --poisson-ratio "
     "with --contact hertz; needed with linear and hunt-crossley).",
+)
+@click.option(
+    "--spring",
+    type=click.Choice(["scaled", "incremental", "total"]),
+    default=None,
+    help="How the stuck mindlin spring follows its stiffness: scaled (default; its energy "
+    "never grows), incremental, or total (displacement times the current stiffness).",
 )
 @click.option("--plot", "plot_file", default=None, help="Write N(t), F(t) and the velocities here.")
 def simulate_command(plot_file: str | None, **o: Any) -> None:

@@ -19,21 +19,24 @@ The variant ("no-slip Mindlin, incremental, scaled on unloading")
 -----------------------------------------------------------------
 While the contact sticks the spring is loaded incrementally,
 ``dF/dt = -k_t u`` (``u = v_x + R omega``, the velocity of the body's contact
-point), as DEM codes integrate it (the "Hertz-Mindlin no-slip" model of Di Renzo
-and Di Maio 2004); while the contact area shrinks (``dk_t/dt < 0``) the force is
-also scaled down with the stiffness, ``dF/dt = -k_t u + F (dk_t/dt)/k_t``, as
-Thornton and co-workers do for unloading. With this rule the quantity
+point), as DEM codes integrate the "Hertz-Mindlin no-slip" model (Di Renzo and
+Di Maio 2004); while the contact area shrinks (``dk_t/dt < 0``) the force is
+also scaled down with the stiffness, ``dF/dt = -k_t u + F (dk_t/dt)/k_t`` (the
+spring keeps its displacement and loses stiffness). This is the default,
+``spring="scaled"``, chosen because with it the quantity
 
 .. math:: E = T + U_n(\delta) + \frac{F^2}{2 k_t},
 
 (``T`` the kinetic energy, ``U_n = k delta^{n+1}/(n+1)`` the normal spring's
 energy) never increases: ``dE/dt = -F^2 |dk_t/dt|/(2 k_t^2)`` while sticking,
-less than that while slipping, minus the normal damping's power. A purely
-incremental rule (no scaling on unloading) gives
-``dE/dt = +F^2 |dk_t/dt| / (2 k_t^2)`` while unloading in stick and can return
-more energy than it stored; this is why the scaled variant is used. With a linear
-normal spring (``n = 1``) the stiffness is constant and the two coincide: the
-lumped two-spring model of Stronge (2000), conservative while sticking.
+less than that while slipping, minus the normal damping's power. The two other
+rules DEM codes use are available for comparison: ``"incremental"`` (no
+scaling) gives ``dE/dt = +F^2 |dk_t/dt|/(2 k_t^2)`` while unloading in stick,
+``"total"`` (``F = -k_t xi``, the displacement times the current stiffness)
+gives ``dE/dt = +F^2 dk_t/dt/(2 k_t^2)`` while loading; either can return more
+energy than the spring stored. With a linear normal spring (``n = 1``) the
+stiffness is constant and the three coincide: the lumped two-spring model of
+Stronge (2000), conservative while sticking.
 
 While the contact slips, ``F = sigma mu N`` (``sigma = +-1``); slip ends when the
 force the spring would take in stick no longer exceeds the cap, i.e. when the
@@ -62,7 +65,10 @@ import numpy as np
 
 from .compliance import mindlin_stiffness_ratio as one_material_ratio
 
-__all__ = ["TangentialRun", "integrate_tangential", "mindlin_stiffness_ratio"]
+__all__ = ["SPRINGS", "TangentialRun", "integrate_tangential", "mindlin_stiffness_ratio"]
+
+#: The rules a stuck spring may follow when its stiffness changes (:func:`integrate_tangential`).
+SPRINGS = ("scaled", "incremental", "total")
 
 #: Most stick/slip switches one impact may take before the run is refused.
 MAX_SEGMENTS = 20000
@@ -143,6 +149,7 @@ def integrate_tangential(
     mass: float, radius: float, inertia: float, mu: float, vx: float, vy: float, omega: float,
     *, stiffness: float, exponent: float, alpha: float = 0.0, damping: float = 0.0,
     stiffness_ratio: float, time_scale: float, rtol: float = 1e-10, samples: int = 400,
+    spring: str = "scaled",
 ) -> TangentialRun:  # fmt: skip
     r"""Integrate one impact with Hertz(-type) normal and Mindlin tangential compliance.
 
@@ -169,6 +176,13 @@ def integrate_tangential(
         Relative tolerance of the integrator (DOP853).
     samples : int
         Evenly spaced output times, to which every switch is added.
+    spring : {"scaled", "incremental", "total"}
+        How the stuck spring follows a changing stiffness: ``"scaled"`` (default)
+        ``dF/dt = -k_t u + F min(dk_t/dt, 0)/k_t``, the rule whose energy never grows;
+        ``"incremental"`` ``dF/dt = -k_t u`` (the plain incremental update);
+        ``"total"`` ``F = -k_t xi`` with ``xi`` the accumulated displacement, i.e.
+        ``dF/dt = -k_t u + F (dk_t/dt)/k_t`` (codes that store the displacement and
+        multiply it by the current stiffness). The three coincide for ``n = 1``.
 
     Returns
     -------
@@ -185,7 +199,11 @@ def integrate_tangential(
 
     if damping > 0 and exponent != 1.0:
         raise ValueError("viscous damping needs a linear spring (exponent 1)")
+    if spring not in SPRINGS:
+        raise ValueError(f"spring must be one of {SPRINGS}, got {spring!r}")
     k, n, a, c, r = stiffness, exponent, 1.5 * alpha, damping, stiffness_ratio
+    # the share of dk_t/dt (when < 0, when > 0) that rescales F: see ``spring``
+    down, up = {"scaled": (1.0, 0.0), "incremental": (0.0, 0.0), "total": (1.0, 1.0)}[spring]
     speed = abs(vy)
     vscale = abs(vx) + speed + abs(radius * omega)
     fscale = mass * vscale / time_scale
@@ -206,7 +224,8 @@ def integrate_tangential(
         ddd = -big_n / mass
         shape = dd * (1.0 + a * dd)
         n_rate = (shape + (a * d + (c / k if n == 1.0 else 0.0)) * ddd / n) / r
-        unload = min((n - 1.0) / n * shape, 0.0) / r
+        rescale = (n - 1.0) / n * shape
+        unload = (down * min(rescale, 0.0) + up * max(rescale, 0.0)) / r
         return big_n, n_rate, unload
 
     def rhs(_t, y, stick, sigma):
@@ -215,7 +234,8 @@ def integrate_tangential(
         u = vx_ + radius * om
         if stick:
             f_t = force
-            scale = min((n - 1.0) * (-vy_) / d, 0.0) if d > 0 and n != 1.0 else 0.0
+            rate = (n - 1.0) * (-vy_) / d if d > 0 and n != 1.0 else 0.0
+            scale = down * min(rate, 0.0) + up * max(rate, 0.0)
             df = -kt(d) * u + force * scale
             dxi = u
         else:

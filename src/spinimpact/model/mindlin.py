@@ -53,6 +53,10 @@ class Mindlin:
         ``r = k_t/k_n`` directly, ``> 0`` (instead of ``poisson_ratio``): ``k_t``
         is ``r`` times the normal law's elastic stiffness ``n k delta^{n-1}``.
         Large values approach the rigid (no tangential compliance) model.
+    spring : {"scaled", "incremental", "total"}
+        How a stuck spring follows its changing stiffness
+        (:func:`spinimpact.core.tangential.integrate_tangential`); ``"scaled"``
+        (default) is the rule whose energy never grows.
 
     Notes
     -----
@@ -72,8 +76,13 @@ class Mindlin:
 
     poisson_ratio: float | None = None
     stiffness_ratio: float | None = None
+    spring: str = "scaled"
 
     def __post_init__(self) -> None:
+        if not isinstance(self.spring, str):
+            raise TypeError(f"spring must be one of {kernels.SPRINGS}, got {self.spring!r}")
+        if self.spring not in kernels.SPRINGS:
+            raise ValueError(f"spring must be one of {kernels.SPRINGS}, got {self.spring!r}")
         if self.poisson_ratio is not None and self.stiffness_ratio is not None:
             raise ValueError("give poisson_ratio or stiffness_ratio, not both")
         if self.poisson_ratio is not None:
@@ -103,7 +112,7 @@ class Mindlin:
     def to_dict(self) -> dict[str, Any]:
         """The law's name and parameters as plain Python values."""
         return {"law": "Mindlin", "poisson_ratio": self.poisson_ratio,
-                "stiffness_ratio": self.stiffness_ratio}  # fmt: skip
+                "stiffness_ratio": self.stiffness_ratio, "spring": self.spring}  # fmt: skip
 
 
 @dataclass(frozen=True, eq=False)
@@ -235,6 +244,7 @@ def simulate_tangential(
     run = kernels.integrate_tangential(
         m, r, j, mu_, vx_, vy_, om_, **normal, stiffness_ratio=ratio,
         time_scale=contact.time_scale(m, abs(vy_)), rtol=_tolerance(rtol),
+        spring=tangential.spring,
     )  # fmt: skip
     e0 = float(core.kinetic_energy(vx_, vy_, om_, m, j))
     e1 = float(core.kinetic_energy(run.vx[-1], run.vy[-1], run.omega[-1], m, j))

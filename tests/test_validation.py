@@ -1,0 +1,143 @@
+"""docs/validation.md says what the validation code computes (benchmarks/kharaz.py,
+benchmarks/chung_ooi.py), and its statements hold."""
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from benchmarks import chung_ooi, kharaz
+
+from spinimpact.core.tangential import integrate_tangential, mindlin_stiffness_ratio
+
+DOC = (Path(__file__).resolve().parents[1] / "docs" / "validation.md").read_text()
+
+
+@pytest.fixture(scope="module")
+def rows():
+    return kharaz.table()
+
+
+def test_the_table_is_what_the_code_computes(rows):
+    start = DOC.index("<!-- validation table")
+    block = DOC[DOC.index("\n", start) + 1 : DOC.index("<!-- end of validation table")]
+    assert block.strip() == kharaz.markdown_table(rows).strip()
+
+
+def test_the_statements_about_the_table(rows):
+    e = dict(rows)
+    rigid = e["rigid"]
+    # the pipeline check: the issue's worst cases as pairs, and the rms measured here
+    assert rigid["e_t"][1:] == pytest.approx((5 / 7 - 0.5964, 20.0845), abs=1e-4)
+    assert rigid["spin"][1] == pytest.approx(577.0096 - 402.83, abs=0.01)
+    assert round(rigid["e_t"][0], 3) == 0.054 and round(rigid["spin"][0]) == 73
+    # the goal: e_t not met by any model; spin met by Stronge, Walton and the linear model
+    best_et = min(err["e_t"][0] for _, err in rows)
+    assert best_et > 0.013
+    assert best_et == e["Hertz-Mindlin in time, scaled spring, alloy (nu = 0.33)"]["e_t"][0]
+    for label in (
+        "Stronge, nu = 0.23",
+        "Walton, beta0 = 0.33",
+        "linear spring-dashpot + Mindlin ratio in time",
+    ):
+        assert e[label]["spin"][0] < 33
+    compliant = [err for label, err in rows if label != "rigid"]
+    assert all(0.49 <= round(err["rebound_angle"][0], 2) <= 0.75 for err in compliant)
+    # every compliance model's worst e_t is at the smallest angles (2 or 4 degrees)
+    assert all(err["e_t"][2] < 5 for err in compliant)
+
+
+def test_between_9_and_60_degrees():
+    angles, values = kharaz.measured()["e_t"]
+    keep = angles > 9
+    worst = {}
+    for label, model, material in kharaz.MODELS:
+        worst[label] = np.abs(model(angles, material)["e_t"] - values)[keep].max()
+    assert round(worst["Stronge, nu = 0.23"], 3) == 0.018
+    assert round(worst["linear spring-dashpot + Mindlin ratio in time"], 3) == 0.012
+    assert round(worst["Hertz-Mindlin in time, scaled spring"], 3) == 0.049
+    assert round(worst["Hertz-Mindlin in time, scaled spring, alloy (nu = 0.33)"], 3) == 0.025
+    assert round(worst["rigid"], 3) == 0.118
+
+
+def test_small_angle_spring_rules_and_definitions():
+    two_and_four = np.array([2.0275, 3.9282])
+    inc = kharaz.incremental(two_and_four)["e_t"]
+    tot = kharaz.total(two_and_four)["e_t"]
+    assert round(inc.max(), 2) == 0.96 and round(tot.max(), 2) == 1.00
+    # the anvil: glass constants move the stiffness ratio from 0.870 to 0.875
+    assert round(float(mindlin_stiffness_ratio(0.23)), 3) == 0.870
+    assert round(float(mindlin_stiffness_ratio(0.23, 0.22, 3.8e11 / 7e10)), 3) == 0.875
+    # rebound angle at 60 degrees: 57.7 for the centre (rigid), 48 for the contact point
+    vx, vy = kharaz.incidence(60.0)
+    imp = kharaz.solve(kharaz.OXIDE.body, vx, vy, 0.0, mu=kharaz.MU, kappa=kharaz.KAPPA)
+    centre = math.degrees(math.atan2(float(imp.after.vx), float(imp.after.vy)))
+    u = float(imp.after.vx + kharaz.RADIUS * imp.after.omega)
+    assert (
+        round(centre, 1) == 57.7 and round(math.degrees(math.atan2(u, float(imp.after.vy)))) == 48
+    )
+
+
+def test_alpha_v_calibration_gives_kappa_at_every_angle():
+    body = kharaz.OXIDE.body
+    alpha_v = kharaz._hertz_alpha_speed(kharaz.OXIDE)
+    for angle in (0.0, 45.0, 80.0):
+        vx, vy = kharaz.incidence(angle)
+        law = kharaz.HertzContact(3.8e11 / 2, 0.23, kharaz.RADIUS, alpha_v / abs(vy))
+        assert law.restitution(float(body.mass), abs(vy)) == pytest.approx(0.98, abs=1e-8)
+
+
+def test_chung_ooi_normal_tests_against_hertz_theory():
+    for case in (*chung_ooi.TEST1, *chung_ooi.TEST2):
+        run, ref = chung_ooi.normal_run(case), chung_ooi.hertz_theory(case)
+        for key in ("duration", "peak_force", "max_compression"):
+            assert float(getattr(run, key)) == pytest.approx(ref[key], rel=1e-8)
+    assert chung_ooi.TEST1[0] == chung_ooi.NormalCase("glass", 4.8e10, 0.2, 2800, 0.01, 10, True)
+    case = chung_ooi.TEST3[1]
+    assert float(chung_ooi.normal_run(case, 0.4).restitution) == pytest.approx(0.4, abs=1e-6)
+
+
+def test_chung_ooi_tests_5_and_6_equal_the_rigid_law_where_it_slides():
+    lines = chung_ooi.test5()[1:]
+    for line in lines:
+        psi, recoil, ref_recoil, spin, ref_spin = line.split()[-5:]
+        if float(psi) > 7:
+            assert float(recoil) == pytest.approx(float(ref_recoil), abs=1e-4)
+            assert float(spin) == pytest.approx(float(ref_spin), abs=1e-4)
+    for line in chung_ooi.test6()[1:]:
+        parts = line.split()
+        chi, beta, ref_beta = (float(x) for x in parts[-5:-2])
+        if chi < 1:
+            assert beta == pytest.approx(ref_beta, abs=1e-4)
+        else:
+            assert beta > 0  # grip where the rigid law sticks
+    case = chung_ooi.TEST6[0]
+    assert (case.normal_speed, case.mu, case.kappa, case.radius) == (0.2, 0.4, 0.5, 0.1)
+
+
+def test_energy_of_the_variants_as_stated():
+    """The doc quotes the variants' energy on 24 random impacts: tests/core checks it;
+    here the total rule's 0.4 % at its worst, so the figure in the doc stays true."""
+    from spinimpact.core.contact import power_law_time_scale
+
+    from tests.core.test_tangential import K_HERTZ, J, M, R, _cases, _final_gain
+
+    finals = []
+    for vx, vy, omega, mu, ratio, _ in _cases():
+        ts = float(power_law_time_scale(M, abs(vy), K_HERTZ, 1.5))
+        run = integrate_tangential(
+            M,
+            R,
+            J,
+            mu,
+            vx,
+            vy,
+            omega,
+            stiffness=K_HERTZ,
+            exponent=1.5,
+            stiffness_ratio=ratio,
+            time_scale=ts,
+            spring="total",
+        )
+        finals.append(_final_gain(run))
+    assert round(max(finals), 3) == 0.004
