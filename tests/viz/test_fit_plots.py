@@ -62,3 +62,15 @@ def test_corner_plot_of_three_parameters():
     np.testing.assert_allclose(profile.get_ydata(), rise)
     with pytest.raises(ValueError, match="at least two"):
         plot_corner(fit(data(), BALL, fixed={"kappa": 0.8}))
+
+
+def test_corner_plot_of_a_friction_the_data_only_bound():
+    d = data(same_speed=True)
+    steep = d.select(d.incidence_angle_deg < 40.0)  # these bounces all stick
+    res = fit(steep, BALL, free_gyration=True)
+    assert res["mu"].one_sided
+    fig = plot_corner(res)
+    shown = fig.axes[0].lines[0].get_xdata()
+    assert shown.max() <= 3.0 * max(res["mu"].low, res["mu"].estimate)  # not out to 1e6
+    assert any("flat" in t.get_text() for t in fig.axes[0].texts)
+    assert res["mu"].low in [ln.get_xdata()[0] for ln in fig.axes[3].lines]  # dashed bound

@@ -138,9 +138,11 @@ def plot_corner(res: FitResult) -> Figure:
     -------
     matplotlib.figure.Figure
         Diagonal: the profile's rise ``(chi2 - chi2_min)/s^2`` at the values visited,
-        the threshold of the interval and the interval's ends. Below: the estimate and
-        the ellipse of the covariance at the fit's confidence for two parameters
-        (omitted for a pair holding a parameter of infinite standard error).
+        the threshold of the interval and the interval's ends (for a parameter the data
+        only bound, its finite part and the lower bound). Below: the estimate and the
+        ellipse of the covariance at the fit's confidence for two parameters (omitted
+        for a pair holding a parameter of infinite standard error; a bound-only
+        parameter's lower bound dashed).
 
     Raises
     ------
@@ -162,6 +164,11 @@ def plot_corner(res: FitResult) -> Figure:
                 continue
             if i == j:
                 values, rise = res.profiles[ni]
+                if res.one_sided[i]:  # flat to infinity: draw the finite part, say the rest
+                    keep = values <= 3.0 * max(res.interval_low[i], res.estimate[i])
+                    values, rise = values[keep], rise[keep]
+                    ax.text(0.97, 0.9, "flat to $\\infty$", transform=ax.transAxes,
+                            ha="right", va="top", fontsize="small")  # fmt: skip
                 ax.plot(values, rise, "o-", ms=3, color="tab:blue")
                 ax.axhline(level, color="0.5", ls="--", lw=0.8)
                 for end in (res.interval_low[i], res.interval_high[i]):
@@ -170,6 +177,9 @@ def plot_corner(res: FitResult) -> Figure:
                 ax.set_ylabel("profile rise" if j == 0 else "")
             else:
                 ax.plot(res.estimate[j], res.estimate[i], "+", color="k", ms=8)
+                for k, line in ((j, ax.axvline), (i, ax.axhline)):
+                    if res.one_sided[k]:  # the lower bound of a parameter only bounded
+                        line(res.interval_low[k], color="tab:orange", lw=0.8, ls="--")
                 cov = res.covariance[np.ix_([j, i], [j, i])]
                 if np.all(np.isfinite(cov)):
                     vals, vecs = np.linalg.eigh(cov)
