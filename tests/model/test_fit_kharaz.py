@@ -1,11 +1,11 @@
 """fit() on a measurement: Kharaz, Gorham & Salman (2001), a 5 mm aluminium-oxide sphere
 on a glass anvil at 3.9 m/s without spin (docs/references.md, "Kharaz et al. 2001").
 
-The points are the public digitization of the paper's figures used by the MFiX DEM test
-case DEM05 (via Di Renzo & Di Maio 2004, Figs. 6 and 8): tangential restitution
-``e_t = vx+/vx-`` of the centre and the magnitude of the spin after impact, each over the
-incidence angle from the normal. Each point is one bounce with one measured quantity:
-``vx = 3.9 sin(theta)``, ``vy = -3.9 cos(theta)``, ``omega = 0``, and either
+The points (benchmarks/data/kharaz2001) are the public digitization of the paper's
+figures used by the MFiX DEM test case DEM05 (via Di Renzo & Di Maio 2004, Figs. 6 and 8):
+tangential restitution ``e_t = vx+/vx-`` of the centre and the magnitude of the spin after
+impact, each over the incidence angle from the normal. Each point is one bounce with one
+measured quantity: ``vx = 3.9 sin(theta)``, ``vy = -3.9 cos(theta)``, ``omega = 0``, and either
 ``after_vx = e_t vx`` or ``after_omega = -|omega|`` (a ball moving in +x spins clockwise
 after friction acts). The literature's friction coefficient is 0.092 with normal
 restitution 0.98 (Chung & Ooi 2011, Test 4), held fixed: without measured ``vy+`` the
@@ -14,18 +14,18 @@ sliding bounces depend on ``mu (1 + kappa)`` only.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
 from spinimpact import Body
+from spinimpact.cli.fit import read_columns
 from spinimpact.model.fit import fit
 from spinimpact.model.fit_data import MeasuredBounces
 
-#: (incidence angle deg, e_t): Di Renzo & Di Maio (2004) Fig. 6, as in MFiX DEM05.
-E_T = [(2.0275, 0.7938), (3.9282, 0.7450), (9.6304, 0.6728), (20.0845, 0.5964),
-       (30.2218, 0.6883), (39.3031, 0.7719), (49.5459, 0.8469), (59.8416, 0.9019)]  # fmt: skip
-#: (incidence angle deg, |omega+| rad/s): Di Renzo & Di Maio (2004) Fig. 8, as in MFiX DEM05.
-OMEGA = [(6.0025, 135.5703), (10.9840, 264.5493), (21.1931, 577.0096), (31.0947, 612.6481),
-         (39.0283, 595.4843), (50.2214, 452.9444), (60.2460, 381.3185)]  # fmt: skip
+DATA = Path(__file__).resolve().parents[2] / "benchmarks" / "data" / "kharaz2001"
+E_T = np.column_stack(list(read_columns(str(DATA / "tangential_restitution.csv")).values()))
+OMEGA = np.column_stack(list(read_columns(str(DATA / "omega.csv")).values()))
 SPEED, RADIUS, MU = 3.9, 0.0025, 0.092
 BALL = Body.solid_sphere(mass=4000.0 * 4.0 / 3.0 * np.pi * RADIUS**3, radius=RADIUS)
 
@@ -33,7 +33,7 @@ BALL = Body.solid_sphere(mass=4000.0 * 4.0 / 3.0 * np.pi * RADIUS**3, radius=RAD
 def kharaz(sigma_e_t=None) -> MeasuredBounces:
     """The measured bounces; with ``sigma_e_t``, only the e_t points, with that standard
     deviation of e_t (the digitization's reading error of about 1 % of an axis from 0 to 1)."""
-    et, om = np.array(E_T), np.array(OMEGA)
+    et, om = E_T, OMEGA
     if sigma_e_t is not None:
         om = om[:0]
     theta = np.radians(np.r_[et[:, 0], om[:, 0]])
