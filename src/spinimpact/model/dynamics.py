@@ -164,7 +164,7 @@ def simulate(
     falls to zero) and ``F = -mu N sign(u)`` while the contact point slips; when
     ``u = v_x + R omega`` reaches zero (located as an event to integrator
     precision) the contact point sticks and ``F = 0`` from then on, as in the
-    paper. Tangential compliance is ignored.
+    paper. Without ``tangential``, tangential compliance is ignored.
 
     Examples
     --------
