@@ -128,7 +128,7 @@ def _stronge_cases():
         zeta = float(rng.choice([1.05, 2.0, 2.5, 3.0, 3.5, 5.0]))
         mu = float(rng.uniform(0.05, 0.8))
         kappa = float(rng.choice([0.0, 0.3, 0.6, 0.8, 0.98, 1.0]))
-        ratio = float(rng.choice([0.7, 0.87, 2.0, 8.0, 30.0]))
+        ratio = float(rng.choice([0.7, 0.87, 2.0, 8.0, 30.0, 150.0]))
         vy = -float(10 ** rng.uniform(-1, 1))
         psi = float(10 ** rng.uniform(-1.5, 1.3))  # r |u/v| / mu: < 1 starts stuck
         slip = (-1) ** k * psi * mu / ratio * abs(vy)
