@@ -38,6 +38,7 @@ images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact planar --body rod --angle-deg 45 --mu 0.3 --kappa 0.8 --plot docs/images/routh_planar.png --dpi 80 > /dev/null
 	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot docs/images/planar_map.png --resolution 300 --dpi 80 > /dev/null
 	$(PY) docs/scripts/fit_kharaz.py docs/images/fit_kharaz.png
+	$(PY) docs/scripts/flight.py docs/images
 
 validation: $(STAMP)  ## every model against Kharaz et al. (2001); the Chung & Ooi (2011) tests
 	$(PY) -m benchmarks.validation kharaz

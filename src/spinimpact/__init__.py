@@ -25,6 +25,8 @@ from .model.compliance import (
 from .model.fit import FitResult, fit
 from .model.fit_data import MeasuredBounces
 from .model.fit_drops import fit_drops
+from .model.flight import flight, launch
+from .model.flight_result import Flight
 from .model.impact import History, Impact, Outcome, State, solve
 from .model.pair import PairImpact, solve_pair
 from .model.particle import ParticleImpact, solve_particle
@@ -36,6 +38,7 @@ from .model.planar import (
     solve_planar,
 )
 from .model.planar_body import Pendulum, PlanarBody
+from .model.presets import BALLS, GROUNDS, Ball, Ground
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
@@ -46,6 +49,13 @@ __all__ = [
     "fit_drops",
     "MeasuredBounces",
     "FitResult",
+    "flight",
+    "launch",
+    "Flight",
+    "Ball",
+    "Ground",
+    "BALLS",
+    "GROUNDS",
     "solve_pair",
     "PairImpact",
     "solve_sphere",

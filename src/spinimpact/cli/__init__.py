@@ -18,6 +18,7 @@ import numpy as np
 from ._common import DEFAULTS, errors_to_exit_2
 from .batch import batch_command
 from .fit import fit_command
+from .flight import flight_command
 from .pictures import figures_command, map_command
 from .planar import planar_command
 from .simulate import simulate_command
@@ -49,6 +50,7 @@ for _command in (
     planar_command,
     sphere_command,
     pair_command,
+    flight_command,
     fit_command,
 ):
     cli.add_command(_command)

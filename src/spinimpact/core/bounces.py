@@ -51,7 +51,7 @@ class Flights(NamedTuple):
 
 def fly(
     position, velocity, spin, *, mass, radius, inertia, zeta, mu, kappa, rolling,
-    aero: AeroConstants, max_bounces, t_stop, settle_speed, dt, record=False,
+    aero: AeroConstants, max_bounces, t_stop, settle_speed, dt, record=False, rebound_slip=None,
 ) -> Flights:  # fmt: skip
     """Fly, bounce and roll ``n`` balls (module docstring).
 
@@ -75,6 +75,9 @@ def fly(
         Integrator step, s.
     record : bool
         Keep the path for pictures.
+    rebound_slip : callable, optional
+        A tangential compliance law for the bounces (:func:`~spinimpact.core.ground.
+        ground_bounce`).
     """
     p = np.array(position, dtype=float)
     v = np.array(velocity, dtype=float)
@@ -112,7 +115,7 @@ def fly(
         k = count[hi]
         b_time[hi, k], out["pos"][hi, k] = t[hi], p[hi]
         out["vb"][hi, k], out["wb"][hi, k] = v[hi], w[hi]
-        b = ground_bounce(v[hi], w[hi], kappa=kappa, **ground)
+        b = ground_bounce(v[hi], w[hi], kappa=kappa, rebound_slip=rebound_slip, **ground)
         v[hi], w[hi] = b.velocity, b.spin
         out["va"][hi, k], out["wa"][hi, k] = b.velocity, b.spin
         regime[hi, k], grips[hi, k] = b.regime, b.grips

@@ -20,7 +20,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import impulse
+from . import compliance, impulse
 from .sphere3d import cross, dot, sphere_contact, sphere_rebound, sphere_spin_change
 
 __all__ = ["GroundBounce", "Roll", "UP", "ground_bounce", "roll_to_rest"]
@@ -48,7 +48,8 @@ class Roll(NamedTuple):
     slide_end: Any  #: time the slip stops (inf: never), s
 
 
-def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa) -> GroundBounce:
+def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
+                  rebound_slip=None) -> GroundBounce:  # fmt: skip
     """The exact bounce of balls on the ground: :func:`spinimpact.solve_sphere`'s kernels.
 
     Parameters
@@ -59,14 +60,29 @@ def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa) -> 
         ``m`` (kg), ``R`` (m), ``J`` (kg m^2), ``1 + R^2/rho^2``.
     mu, kappa : float
         Coulomb friction and restitution of the ground.
+    rebound_slip : callable, optional
+        A tangential compliance law's ``rebound_slip(slip, vy, zeta, mu, kappa) -> (c_t^+,
+        stuck)`` on the seam (``spinimpact.Walton(...).rebound_slip``): the slip after, signed
+        along the slip before, as :func:`spinimpact.solve_sphere` with ``tangential=`` uses
+        it. The regime codes are then :data:`spinimpact.core.compliance.COMPLIANT_REGIMES`'s
+        and ``grips`` says the contact stuck.
     """
     n = np.broadcast_to(UP, np.shape(velocity))
     c = sphere_contact(velocity, spin, n, radius)
-    r = sphere_rebound(c, n, mass, zeta, mu, kappa)
-    v1 = velocity + r.impulse / mass
-    w1 = spin + sphere_spin_change(n, radius, inertia, r.friction)
-    code = impulse.regime_code(c.slip_speed, c.normal_velocity, zeta, mu, kappa)
-    grips = impulse.sticks(c.slip_speed, c.normal_velocity, zeta, mu, kappa)
+    if rebound_slip is None:
+        r = sphere_rebound(c, n, mass, zeta, mu, kappa)
+        impulse_vector, friction = r.impulse, r.friction
+        code = impulse.regime_code(c.slip_speed, c.normal_velocity, zeta, mu, kappa)
+        grips = impulse.sticks(c.slip_speed, c.normal_velocity, zeta, mu, kappa)
+    else:
+        speed1, grips = rebound_slip(c.slip_speed, c.normal_velocity, zeta, mu, kappa)
+        f1 = compliance.tangential_impulse_of(mass, zeta, c.slip_speed, speed1)
+        friction = np.asarray(f1)[..., None] * c.direction
+        tau1 = impulse.total_impulse(mass, c.normal_velocity, kappa)
+        impulse_vector = np.asarray(tau1)[..., None] * n + friction
+        code = compliance.compliant_regime_code(c.slip_speed, speed1, mu, grips)
+    v1 = velocity + impulse_vector / mass
+    w1 = spin + sphere_spin_change(n, radius, inertia, friction)
     return GroundBounce(v1, w1, np.asarray(code), np.asarray(grips, dtype=bool))
 
 

@@ -27,6 +27,8 @@ from .._validation import as_real_array, check, setting, vector3, whole
 from ..core import impulse
 from ..core.aero import aero_constants
 from ..core.bounces import STOPS, assemble_path, fly
+from ..core.compliance import COMPLIANT_REGIMES
+from ._hooks import tangential_law
 from .flight_result import Bounces, Flight
 from .presets import Ball, Ground
 from .presets import ball as as_ball
@@ -108,7 +110,8 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
            position: Any = None, air_density: float = AIR_DENSITY, gravity: float = GRAVITY,
            max_bounces: int = 30, t_stop: float = 60.0, settle_speed: float = 0.05,
            dt: float = 5e-3, chunk: int = 4096, path: bool | None = None,
-           progress: Callable[[int, int], None] | None = None) -> Flight:  # fmt: skip
+           progress: Callable[[int, int], None] | None = None,
+           tangential: Any = None) -> Flight:  # fmt: skip
     """Fly a spinning ball, bounce it exactly on the ground, and roll it to rest.
 
     Parameters
@@ -145,6 +148,10 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         Keep each ball's path (for pictures); by default for up to 16 balls.
     progress : callable, optional
         Called as ``progress(done, total)`` after each chunk.
+    tangential : Walton or Stronge, optional
+        A tangential compliance law for every bounce, as in :func:`~spinimpact.solve_sphere`
+        (then ``regime`` takes the compliant regimes' names and ``grips`` says the contact
+        stuck during the impact).
 
     Returns
     -------
@@ -163,9 +170,10 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
     >>> f = flight("tennis", "hard", speed=50.0, angle=-6.0, height=2.8, spin_rpm=2000.0)
     >>> x, z = float(f.bounces.position.x[0]), float(f.bounces.position.z[0])
     >>> round(x, 2), z, bool(f.bounces.grips[0])
-    (15.49, 0.0, False)
+    (15.49, 0.0, True)
     """
     ball_, ground_ = as_ball(ball), as_ground(ground)
+    law = None if tangential is None else tangential_law(tangential)
     radius = ball_.radius
     if velocity is None:
         if speed is None or angle is None:
@@ -202,19 +210,20 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         drag_coefficient=ball_.drag_coefficient, lift_slope=ball_.lift_slope,
         lift_max=ball_.lift_max, spin_decay=ball_.spin_decay, gravity=g,
     )  # fmt: skip
+    slip_law = None if law is None else law.rebound_slip
     parts = []
     for start in range(0, n, chunk):
         sl = slice(start, min(n, start + chunk))
         run = fly(p[sl], v[sl], w0[sl], mass=ball_.mass, radius=radius, inertia=body.inertia,
                   zeta=body.zeta, mu=ground_.mu, kappa=ground_.kappa, rolling=ground_.rolling,
                   aero=aero, max_bounces=nb, t_stop=t_stop, settle_speed=settle, dt=dt,
-                  record=record)  # fmt: skip
+                  record=record, rebound_slip=slip_law)  # fmt: skip
         used = max(1, int(run.bounces.max(initial=0)))
         trimmed = run._replace(**{k: getattr(run, k)[:, :used] for k in _PER_BOUNCE})
         parts.append((trimmed, assemble_path(run.path, sl.stop - sl.start) if record else None))
         if progress is not None:
             progress(sl.stop, n)
-    return _package(ball_, ground_, p, v, w0, parts, shape, record)
+    return _package(ball_, ground_, law, p, v, w0, parts, shape, record)
 
 
 _PER_BOUNCE = ("bounce_time", "bounce_position", "velocity_before", "spin_before",
@@ -237,7 +246,7 @@ def _angle(vel: np.ndarray, sign: float) -> np.ndarray:
     return np.arctan2(sign * vel[..., 1], along)
 
 
-def _package(ball_, ground_, p, v, w0, parts, shape, record) -> Flight:
+def _package(ball_, ground_, law, p, v, w0, parts, shape, record) -> Flight:
     runs = [r for r, _ in parts]
 
     def cat(name: str) -> np.ndarray:
@@ -252,7 +261,7 @@ def _package(ball_, ground_, p, v, w0, parts, shape, record) -> Flight:
 
     vb, va = per_bounce("velocity_before", np.nan), per_bounce("velocity_after", np.nan)
     code = per_bounce("regime", -1)
-    names = np.asarray((*impulse.REGIMES, ""))
+    names = np.asarray((*(impulse.REGIMES if law is None else COMPLIANT_REGIMES), ""))
     bounces = Bounces(
         time=freeze(per_bounce("bounce_time", np.nan)),
         position=_vector(per_bounce("bounce_position", np.nan)),
@@ -271,7 +280,8 @@ def _package(ball_, ground_, p, v, w0, parts, shape, record) -> Flight:
         path_t, path_p = np.zeros((len(p), 0)), np.zeros((len(p), 0, 3))
     first = per_bounce("bounce_time", np.nan)[..., 0]
     return Flight(
-        ball=ball_, ground=ground_, launch_position=_vector(one(p)), launch=_state(one(v), one(w0)),
+        ball=ball_, ground=ground_, tangential=law, launch_position=_vector(one(p)),
+        launch=_state(one(v), one(w0)),
         bounce_count=freeze(one(cat("bounces"))), bounces=bounces,
         apex_height=freeze(one(cat("apex_height"))), apex_time=freeze(one(cat("apex_time"))),
         flight_time=freeze(first), final_time=freeze(one(cat("final_time"))),

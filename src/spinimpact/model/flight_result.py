@@ -65,6 +65,8 @@ class Flight(Result):
     Attributes
     ----------
     ball, ground : Ball, Ground
+    tangential : Walton, Stronge or None
+        The tangential compliance law of the bounces (``None``: the rigid law).
     launch_position : Vector
         m.
     launch : State3
@@ -90,6 +92,7 @@ class Flight(Result):
 
     ball: Ball
     ground: Ground
+    tangential: Any
     launch_position: Vector
     launch: State3
     bounce_count: Array
@@ -163,7 +166,8 @@ class Flight(Result):
         rows = self.bounce_rows()
         head = (f"{'#':>2} {'t s':>7} {'x m':>7} {'z m':>7} {'v in':>6} {'v out':>6} "
                 f"{'in deg':>7} {'out deg':>7} {'rpm in':>7} {'rpm out':>7}  contact")  # fmt: skip
-        lines = [f"{self.ball.name} ball on {self.ground.name}", head]
+        law = "" if self.tangential is None else f" ({self.tangential!r})"
+        lines = [f"{self.ball.name} ball on {self.ground.name}{law}", head]
         for r in rows:
             lines.append(
                 f"{r['bounce']:>2} {r['time_s']:7.3f} {r['x_m']:7.2f} {r['z_m']:7.2f} "
@@ -175,7 +179,8 @@ class Flight(Result):
         fp = self.final_position
         lines.append(
             f"apex {float(self.apex_height):.2f} m at {float(self.apex_time):.3f} s; "
-            f"{int(self.bounce_count)} bounces; {self.stop} at {float(self.final_time):.2f} s, "
+            f"{int(self.bounce_count)} bounces; stopped ({self.stop}) at "
+            f"{float(self.final_time):.2f} s, "
             f"x {float(fp.x):.2f} m, z {float(fp.z):.2f} m"
         )
         return "\n".join(lines)

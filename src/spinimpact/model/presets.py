@@ -14,7 +14,7 @@ Examples
 >>> round(ball.body.zeta, 3)   # a thick rubber shell: between the thin shell's 2.5 and 3.5
 2.781
 >>> GROUNDS["hard"].mu
-0.6
+0.7
 """
 
 from __future__ import annotations
@@ -142,11 +142,11 @@ BALLS: dict[str, Ball] = {
 
 #: Ground presets (sources and assumptions: docs/flight.md).
 GROUNDS: dict[str, Ground] = {
-    "hard": Ground("hard", mu=0.6, kappa=0.80, rolling=0.05),
-    "clay": Ground("clay", mu=0.8, kappa=0.83, rolling=0.08),
+    "hard": Ground("hard", mu=0.7, kappa=0.75, rolling=0.05),
+    "clay": Ground("clay", mu=0.82, kappa=0.75, rolling=0.08),
     "grass": Ground("grass", mu=0.55, kappa=0.70, rolling=0.06),
     "table": Ground("table", mu=0.25, kappa=math.sqrt(0.23 / 0.30), rolling=0.01),
-    "green": Ground("green", mu=0.4, kappa=0.4, rolling=1.83**2 / (2 * 9.80665 * 3.05)),
+    "green": Ground("green", mu=0.4, kappa=0.4, rolling=(6 * 0.3048) ** 2 / (2 * 9.80665 * 3.048)),
     "pitch": Ground("pitch", mu=0.6, kappa=math.sqrt(0.8 / 2.0), rolling=0.06),
 }
 

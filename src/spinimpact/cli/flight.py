@@ -1,0 +1,262 @@
+"""``spinimpact flight``: a ball through the air, bouncing exactly, until it rolls to rest.
+
+One ball: the bounce table and the summary (Rich), or ``--json``; ``--plot`` (side and top
+views, bounces marked) and ``--animate`` (``.gif``; ``.mp4`` where ffmpeg is installed), each
+written atomically. ``--samples N`` flies N balls with normally scattered speed, angles and
+spin (``--speed-sd`` ...; seeded), with a progress bar, and prints the spread of the first
+two bounces.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import click
+import numpy as np
+
+from ..model.flight import AIR_DENSITY, flight
+from ..model.presets import BALLS, GROUNDS
+from ._common import image_format, jsonable, progress
+from ._compliance import tangential_law, tangential_options
+
+__all__ = ["flight_command"]
+
+#: m/s in one unit of each ``--speed-unit``.
+UNITS = {"m/s": 1.0, "km/h": 1.0 / 3.6, "mph": 0.44704}
+
+
+def _axis(value: str) -> Any:
+    """``topspin``, ``backspin``, ``sidespin`` or a vector ``x,y,z``."""
+    if value.strip().lower() in ("topspin", "backspin", "sidespin"):
+        return value.strip().lower()
+    try:
+        parts = [float(p) for p in value.split(",")]
+    except ValueError:
+        parts = []
+    if len(parts) != 3:
+        raise click.UsageError(
+            f"--spin-axis must be topspin, backspin, sidespin or x,y,z; got {value!r}"
+        )
+    return parts
+
+
+def _targets(o: dict) -> None:
+    """Check the output paths before anything is computed."""
+    if o["plot"] is not None:
+        image_format(o["plot"], "--plot")
+    if o["animate"] is not None:
+        if Path(o["animate"]).suffix.lower() not in (".gif", ".mp4"):
+            raise click.UsageError(f"--animate must end in .gif or .mp4, got {o['animate']!r}")
+        if o["samples"] is not None:
+            raise click.UsageError("--animate moves one ball; leave out --samples")
+    for option in ("plot", "animate"):
+        path = o[option]
+        if path is not None and not Path(path).parent.is_dir():
+            raise click.UsageError(f"--{option}: no such directory {str(Path(path).parent)!r}")
+
+
+def _inputs(o: dict) -> dict[str, Any]:
+    """The launch as :func:`~spinimpact.flight` takes it; scattered with ``--samples``."""
+    speed = o["speed"] * UNITS[o["speed_unit"]]
+    given = {"speed": speed, "angle": o["angle"], "direction": o["direction"],
+             "spin_rpm": o["spin_rpm"]}  # fmt: skip
+    if o["samples"] is None:
+        return given
+    rng = np.random.default_rng(o["seed"])
+    n = o["samples"]
+    spread = {"speed": o["speed_sd"] * UNITS[o["speed_unit"]], "angle": o["angle_sd"],
+              "direction": o["direction_sd"], "spin_rpm": o["spin_sd"]}  # fmt: skip
+    out = {k: v + spread[k] * rng.standard_normal(n) for k, v in given.items()}
+    out["speed"] = np.abs(out["speed"])  # a speed scattered below zero is a speed the other way
+    return out
+
+
+def _print_one(f: Any) -> None:
+    from rich.console import Console
+
+    from ..viz.flight import flight_tables
+    from ..viz.report import _rich
+
+    console = Console(highlight=False, soft_wrap=True)
+    bounces, summary = flight_tables(f)
+    console.print(_rich(bounces))
+    console.print()
+    console.print(_rich(summary))
+
+
+def _print_many(f: Any) -> None:
+    from rich.console import Console
+    from rich.table import Table
+    from rich.text import Text
+
+    b = f.bounces
+    table = Table(title=Text(f"{f.shape[0]} {f.ball.name} balls on {f.ground.name}"),
+                  title_justify="left", show_edge=False)  # fmt: skip
+    for i, head in enumerate(("quantity", "mean", "sd", "min", "max")):
+        table.add_column(head, justify="left" if i == 0 else "right")
+    rows = [("apex height (m)", f.apex_height), ("bounces", f.bounce_count)]
+    for k in range(min(2, b.time.shape[-1])):
+        rows += [(f"bounce {k + 1}: x (m)", b.position.x[:, k]),
+                 (f"bounce {k + 1}: z (m)", b.position.z[:, k]),
+                 (f"bounce {k + 1}: speed out (m/s)", b.speed_after[:, k]),
+                 (f"bounce {k + 1}: grips (share)", b.grips[:, k].astype(float))]  # fmt: skip
+    for name, values in rows:
+        x = np.asarray(values, float)
+        x = x[~np.isnan(x)]
+        stats = [f"{s:.4g}" for s in (x.mean(), x.std(), x.min(), x.max())] if x.size else ["-"] * 4
+        table.add_row(Text(name), *stats)
+    Console(highlight=False, soft_wrap=True).print(table)
+
+
+@click.command("flight")
+@click.option(
+    "--ball",
+    type=click.Choice(list(BALLS)),
+    default="tennis",
+    show_default=True,
+    help="Ball preset (sources: docs/flight.md).",
+)
+@click.option(
+    "--surface",
+    type=click.Choice(list(GROUNDS)),
+    default="hard",
+    show_default=True,
+    help="Ground preset: mu, kappa, rolling resistance.",
+)
+@click.option("--speed", type=float, default=30.0, show_default=True, help="Launch speed.")
+@click.option("--speed-unit", type=click.Choice(list(UNITS)), default="m/s", show_default=True)
+@click.option(
+    "--angle",
+    type=float,
+    default=0.0,
+    show_default=True,
+    help="Launch angle above the ground, degrees (negative: downwards).",
+)
+@click.option(
+    "--direction",
+    type=float,
+    default=0.0,
+    show_default=True,
+    help="Heading, degrees, counter-clockwise seen from above (0: +x, 90: -z).",
+)
+@click.option(
+    "--height",
+    type=float,
+    default=1.0,
+    show_default=True,
+    help="Launch height of the ball's centre, m.",
+)
+@click.option(
+    "--spin-rpm", type=float, default=0.0, show_default=True, help="Spin, revolutions per minute."
+)
+@click.option(
+    "--spin-axis",
+    default="topspin",
+    show_default=True,
+    help="topspin, backspin, sidespin (about +y: curves left) or x,y,z.",
+)
+@click.option("--mu", type=float, default=None, help="Friction instead of the surface's.")
+@click.option("--kappa", type=float, default=None, help="Restitution instead of the surface's.")
+@click.option(
+    "--air-density",
+    type=float,
+    default=AIR_DENSITY,
+    show_default=True,
+    help="kg/m^3; 0 flies the exact parabola.",
+)
+@click.option("--max-bounces", type=click.IntRange(1), default=30, show_default=True)
+@click.option("--t-stop", type=float, default=60.0, show_default=True, help="Stopping time, s.")
+@click.option(
+    "--dt",
+    type=float,
+    default=5e-3,
+    show_default=True,
+    help="Integrator step, s (impacts are located within it).",
+)
+@click.option(
+    "--samples",
+    type=click.IntRange(1),
+    default=None,
+    help="Fly this many balls, scattered by the --*-sd options.",
+)
+@click.option("--speed-sd", type=float, default=0.0, help="With --samples: sd of the speed.")
+@click.option("--angle-sd", type=float, default=0.0, help="With --samples: sd, degrees.")
+@click.option("--direction-sd", type=float, default=0.0, help="With --samples: sd, degrees.")
+@click.option("--spin-sd", type=float, default=0.0, help="With --samples: sd of the spin, rpm.")
+@click.option("--seed", type=int, default=0, show_default=True, help="With --samples.")
+@click.option("--json", "as_json", is_flag=True, help="Print every field as JSON (SI units).")
+@click.option("--plot", default=None, help="Write side and top views (.png, .svg, .pdf).")
+@click.option("--animate", default=None, help="Write an animation (.gif; .mp4 with ffmpeg).")
+@click.option("--fps", type=click.IntRange(1, 60), default=20, show_default=True)
+@click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True)
+@tangential_options
+def flight_command(**o: Any) -> None:
+    """A spinning ball through the air (drag, Magnus lift, spin decay), bouncing exactly on
+    the ground, then sliding and rolling to rest.
+
+    \b
+    Axes: x along the ground, y up, z = x cross y. Example, a first serve:
+      spinimpact flight --ball tennis --surface hard --speed 50 --angle -6 --height 2.8
+        --spin-rpm 2000 --spin-axis topspin --plot serve.png
+    """
+    from ..model.presets import ground as as_ground
+
+    _targets(o)
+    ground = as_ground(o["surface"])
+    changes = {k: o[k] for k in ("mu", "kappa") if o[k] is not None}
+    ground = ground.replace(**changes) if changes else ground
+    inputs = _inputs(o)
+    law = tangential_law(o)
+    kw = dict(
+        height=o["height"], spin_axis=_axis(o["spin_axis"]), air_density=o["air_density"],
+        max_bounces=o["max_bounces"], t_stop=o["t_stop"], dt=o["dt"], tangential=law,
+    )  # fmt: skip
+    if o["samples"] is None:
+        f = flight(o["ball"], ground, **inputs, **kw)
+    else:
+        with progress() as bar:
+            task = bar.add_task(f"flying {o['samples']} balls", total=o["samples"])
+            done = lambda n, _: bar.update(task, completed=n)  # noqa: E731
+            f = flight(
+                o["ball"],
+                ground,
+                **inputs,
+                **kw,
+                path=o["plot"] is not None,
+                chunk=1024,
+                progress=done,
+            )
+    if o["as_json"]:
+        d = f.to_dict()
+        for name in ("path_time", "path_position"):
+            d.pop(name)
+        click.echo(json.dumps(jsonable(d), indent=2))
+    elif o["samples"] is None:
+        _print_one(f)
+    else:
+        _print_many(f)
+    _write(f, o)
+
+
+def _write(f: Any, o: dict) -> None:
+    if o["plot"] is None and o["animate"] is None:
+        return
+    from ..io import atomic_path
+
+    if o["plot"] is not None:
+        from ..viz.flight import plot_flight
+
+        with atomic_path(o["plot"]) as tmp:
+            plot_flight(f).savefig(tmp, format=image_format(o["plot"], "--plot"), dpi=o["dpi"])
+    if o["animate"] is not None:
+        from ..viz.flight import animate_flight
+
+        kind = Path(o["animate"]).suffix.lstrip(".").lower()
+        with atomic_path(o["animate"]) as tmp:
+            animate_flight(f, tmp, format=kind, fps=o["fps"], dpi=min(o["dpi"], 100))
+    if not o["as_json"]:
+        for path in (o["plot"], o["animate"]):
+            if path is not None:
+                click.echo(f"wrote {path}")

@@ -1,0 +1,181 @@
+"""Tables, figures and animations of :func:`spinimpact.flight` results.
+
+:func:`flight_tables` builds the bounce table and the summary as plain
+:class:`~spinimpact.viz.tables.Table` data (the terminal prints them with Rich);
+:func:`plot_flight` draws the side view ``(x, y)`` and the top view ``(x, z)`` of the
+recorded paths with every bounce marked; :func:`animate_flight` moves the ball along its path
+(GIF through Matplotlib's Pillow writer; MP4 where an ffmpeg writer is installed). Nothing
+here computes physics: every number is a field of the :class:`~spinimpact.Flight`.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..model.flight_result import Flight
+from .tables import Table, number
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
+__all__ = ["flight_tables", "plot_flight", "animate_flight", "ANIMATIONS"]
+
+#: Suffixes :func:`animate_flight` writes, with the Matplotlib writer each needs.
+ANIMATIONS = {".gif": "pillow", ".mp4": "ffmpeg"}
+_MAX_PATHS = 200  # paths drawn for many balls (the bounce marks are drawn for all)
+
+
+def _one(flight: Flight) -> None:
+    if not isinstance(flight, Flight):
+        raise TypeError(f"expected a spinimpact.Flight, got {type(flight).__name__}")
+
+
+def flight_tables(flight: Flight) -> tuple[Table, Table]:
+    """The bounce table (s, m, m/s, degrees, rpm, in / out; skids or grips) and the summary,
+    of one ball."""
+    _one(flight)
+    rows = []
+    for r in flight.bounce_rows():
+        rows.append((
+            str(r["bounce"]), f"{r['time_s']:.3f}", f"{r['x_m']:.2f}", f"{r['z_m']:.2f}",
+            f"{r['speed_before_m_s']:.1f} / {r['speed_after_m_s']:.1f}",
+            f"{r['angle_before_deg']:.1f} / {r['angle_after_deg']:.1f}",
+            f"{r['spin_before_rpm']:.0f} / {r['spin_after_rpm']:.0f}",
+            "grips" if r["grips"] else "skids",
+        ))  # fmt: skip
+    bounces = Table(
+        "bounces", f"Bounces: {flight.ball.name} ball on {flight.ground.name} (in / out)",
+        ("#", "t (s)", "x (m)", "z (m)", "speed (m/s)", "angle (deg)", "spin (rpm)", "contact"),
+        tuple(rows), note="x, z: the centre at the impact; angles below / above the ground",
+    )  # fmt: skip
+    fp = flight.final_position
+    summary = Table("summary", "Flight", ("quantity", "value"), (
+        ("apex height (m)", number(float(flight.apex_height))),
+        ("apex time (s)", number(float(flight.apex_time))),
+        ("first bounce at (s)", number(float(flight.flight_time))),
+        ("bounces", str(int(flight.bounce_count))),
+        ("stopped", str(flight.stop)),
+        ("final time (s)", number(float(flight.final_time))),
+        ("final position x, z (m)", f"{number(float(fp.x))}, {number(float(fp.z))}"),
+        ("tangential law", "rigid" if flight.tangential is None else repr(flight.tangential)),
+    ))  # fmt: skip
+    return bounces, summary
+
+
+def _paths(flight: Flight) -> tuple[np.ndarray, np.ndarray]:
+    """Recorded times and positions as ``(balls, k)`` and ``(balls, k, 3)``."""
+    t = np.asarray(flight.path_time, float)
+    p = np.asarray(flight.path_position, float)
+    n = int(np.prod(flight.shape))  # 1 for one ball
+    return t.reshape(n, t.shape[-1]), p.reshape(n, t.shape[-1], 3)
+
+
+def plot_flight(flight: Flight) -> Figure:
+    """Side view (height ``y`` against ``x``) and top view (``z`` against ``x``) of the
+    recorded paths, the bounces marked; for many balls, the first 200 paths and every
+    bounce."""
+    _one(flight)
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(8.0, 6.0), layout="constrained")
+    side, top = fig.subplots(2, 1, sharex=True, height_ratios=(1.2, 1.0))
+    _, pts = _paths(flight)
+    b = flight.bounces
+    bx, by, bz = (np.asarray(c, float).ravel() for c in (b.position.x, b.position.y, b.position.z))
+    many = pts.shape[0] > 1
+    for i in range(min(len(pts), _MAX_PATHS)):
+        kw = {"lw": 0.6, "alpha": 0.35} if many else {"lw": 1.4}
+        side.plot(pts[i, :, 0], pts[i, :, 1], color="tab:blue", **kw)
+        top.plot(pts[i, :, 0], pts[i, :, 2], color="tab:blue", **kw)
+    hits = ~np.isnan(bx)
+    marks = {"s": 8 if many else 30, "color": "tab:red", "zorder": 3, "label": "bounces"}
+    side.scatter(bx[hits], by[hits], **marks)
+    top.scatter(bx[hits], bz[hits], **marks)
+    fx, fz = (
+        np.asarray(flight.final_position.x).ravel(),
+        np.asarray(flight.final_position.z).ravel(),
+    )
+    rest = np.asarray(flight.stop).ravel() == "rest"
+    if rest.any():
+        top.scatter(fx[rest], fz[rest], marker="x", s=30, color="k", zorder=3, label="at rest")
+    side.axhline(0.0, color="0.4", lw=0.8)
+    side.set_ylabel("height of the centre $y$ (m)")
+    top.set_ylabel("$z$ (m)")
+    top.set_xlabel("distance $x$ (m)")
+    top.invert_yaxis()  # seen from above with y towards the viewer: +z points down the page
+    side.set_title("side view", loc="left", fontsize=10)
+    top.set_title("top view (from above)", loc="left", fontsize=10)
+    top.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2, frameon=False)
+    n = int(np.prod(flight.shape)) if flight.shape else 1
+    what = f"{n} {flight.ball.name} balls" if many else f"{flight.ball.name} ball"
+    fig.suptitle(f"{what} on {flight.ground.name}")
+    return fig
+
+
+def animate_flight(flight: Flight, target: str | Path, *, format: str | None = None,
+                   fps: int = 20, dpi: int = 80) -> None:  # fmt: skip
+    """Write the ball moving along its path (side and top views), in real time, to
+    ``target``: a GIF (Pillow) or an MP4 (Matplotlib's ffmpeg writer, where ffmpeg is
+    installed). ``format`` (``gif`` or ``mp4``) defaults to the suffix of ``target``, so a
+    temporary file may be written under any name.
+
+    Raises
+    ------
+    ValueError
+        For another format, a flight of more than one ball, or one without a recorded path.
+    ImportError
+        For an MP4 where the ffmpeg writer is not installed.
+    """
+    _one(flight)
+    kind = (format or Path(target).suffix.lstrip(".")).lower()
+    if f".{kind}" not in ANIMATIONS:
+        raise ValueError(f"the animation must be a .gif or .mp4, got {str(target)!r}")
+    if flight.shape != ():
+        raise ValueError("animate_flight() moves one ball: select one with flight[i]")
+    times, pts = _paths(flight)
+    ok = ~np.isnan(times[0])
+    times, pts = times[0, ok], pts[0, ok]
+    if len(times) < 2:
+        raise ValueError("this Flight has no recorded path (run flight(..., path=True))")
+    from matplotlib import animation
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    if kind == "mp4" and not animation.writers.is_available("ffmpeg"):
+        raise ImportError("writing .mp4 needs ffmpeg, which is not installed: write a .gif")
+    frames = max(2, min(600, int(math.ceil(float(times[-1] - times[0]) * fps))))
+    clock = np.linspace(times[0], times[-1], frames)
+    xs, ys, zs = (np.interp(clock, times, pts[:, i]) for i in range(3))
+    fig = plot_flight(flight)
+    canvas = FigureCanvasAgg(fig)
+    side, top = fig.axes[:2]
+    (ball_side,) = side.plot([xs[0]], [ys[0]], "o", color="tab:orange", ms=7, zorder=4)
+    (ball_top,) = top.plot([xs[0]], [zs[0]], "o", color="tab:orange", ms=7, zorder=4)
+    label = side.text(0.99, 0.95, "", transform=side.transAxes, ha="right", va="top")
+
+    def draw(i: int) -> tuple:
+        ball_side.set_data([xs[i]], [ys[i]])
+        ball_top.set_data([xs[i]], [zs[i]])
+        label.set_text(f"t = {clock[i]:.2f} s")
+        return ball_side, ball_top, label
+
+    if kind == "mp4":
+        movie = animation.FuncAnimation(fig, draw, frames=frames, blit=False)
+        writer = animation.FFMpegWriter(fps=fps, extra_args=["-f", "mp4"])
+        movie.save(str(target), writer=writer, dpi=dpi)
+        return
+    from PIL import Image
+
+    fig.set_dpi(dpi)
+    canvas.draw()
+    fig.set_layout_engine("none")  # the layout is fixed: each frame only moves the ball
+    images = []
+    for i in range(frames):
+        draw(i)
+        canvas.draw()
+        images.append(Image.fromarray(np.asarray(canvas.buffer_rgba())[..., :3]))
+    images[0].save(target, format="GIF", save_all=True, append_images=images[1:],
+                   duration=round(1000 / fps), loop=0)  # fmt: skip
