@@ -8,6 +8,7 @@ import signal
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from spinimpact import Body, Stronge, Walton, solve
@@ -94,3 +95,38 @@ def test_bad_options_are_one_line_and_exit_2(capsys, args, needle):
     lines = err.strip().splitlines()
     assert len(lines) == 1, err
     assert needle in lines[0]
+
+
+def test_sweep_with_a_law_writes_the_library_numbers(tmp_path):
+    out = tmp_path / "sweep.csv"
+    proc = subprocess.run(
+        [sys.executable, "-m", "spinimpact", "sweep", "--vx", "0:5:11", "--omega", "0",
+         "--tangential", "walton", "--beta0", "0.3", "--output", str(out),
+         "--fields", "after_vx,tangential_restitution,regime"],
+        capture_output=True, text=True, check=True,
+    )  # fmt: skip
+    assert "slip-reversal" in proc.stdout
+    import csv
+
+    with out.open() as f:
+        rows = list(csv.DictReader(f))
+    vx = np.array([float(r["vx"]) for r in rows])
+    imp = solve(BALL, vx, -4.0, 0.0, mu=0.2, kappa=0.8, tangential=Walton(0.3))
+    np.testing.assert_allclose([float(r["after_vx"]) for r in rows], imp.after.vx, rtol=1e-15)
+    assert [r["regime"] for r in rows] == [str(x) for x in imp.regime]
+
+
+@pytest.mark.parametrize(
+    "args, needle",
+    [
+        (["--planar", "rod", "--tangential", "walton", "--beta0", "0.2"],
+         "--tangential walton does not apply to --planar sweeps"),
+        (["--tangential", "stronge"], "needs one of --poisson-ratio and --stiffness-ratio"),
+        (["--tangential", "walton", "--beta0", "0.2", "--fields", "tau_star"],
+         "fields must be among"),
+    ],
+)  # fmt: skip
+def test_sweep_bad_options_are_one_line(capsys, args, needle):
+    status, out, err = run_main(capsys, "sweep", "--vx", "0:1:3", "--omega", "0", *args)
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1 and needle in err

@@ -10,7 +10,7 @@ import click
 
 from ..model.compliance import CompliantImpact, Stronge, TangentialLaw, Walton
 
-__all__ = ["tangential_options", "tangential_law", "print_compliant"]
+__all__ = ["tangential_options", "tangential_law", "print_compliant", "sweep_class"]
 
 
 def tangential_options(function: Callable) -> Callable:
@@ -97,3 +97,27 @@ def print_compliant(imp: CompliantImpact) -> None:
     width = max(len(k) for k, _ in rows)
     for key, value in rows:
         click.echo(f"{key:<{width}}  {value}")
+
+
+def sweep_class(o: dict[str, Any]) -> Callable:
+    """What builds the sweep of the paper's bodies that the options ask for:
+    :class:`~spinimpact.io.sweep.Sweep`, or with a tangential law a
+    :class:`~spinimpact.io.compliant_sweep.CompliantSweep` of that law.
+
+    Raises
+    ------
+    click.UsageError
+        For a law with ``--planar`` or ``--sphere`` (their sweeps take the rigid law).
+    """
+    import functools
+
+    from ..io.compliant_sweep import CompliantSweep
+    from ..io.sweep import Sweep
+
+    law = tangential_law(o)
+    if law is None:
+        return Sweep
+    if o.get("planar") is not None or o.get("sphere") is not None:
+        which = "--planar" if o.get("planar") is not None else "--sphere"
+        raise click.UsageError(f"--tangential {law.name} does not apply to {which} sweeps")
+    return functools.partial(CompliantSweep, tangential=law)

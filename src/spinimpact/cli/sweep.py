@@ -24,6 +24,7 @@ import click
 
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
+from ._compliance import sweep_class, tangential_options
 from ._sphere_sweep import SPHERE_ONLY, sphere_options, sphere_sweep
 
 __all__ = ["sweep_command"]
@@ -277,6 +278,7 @@ def _dask_client(address: str | None) -> Any:
 )
 @click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
 @sphere_options
+@tangential_options
 @click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
 @click.option(
     "--dry-run",
@@ -307,8 +309,9 @@ def sweep_command(
 
     One of the paper's bodies (--body, --gyration), or with --planar one planar body or
     pendulum under one --law, e.g. --planar rod --length 1 --angle-deg 45 --law newton."""
-    from ..io.sweep import Sweep, estimate_sweep, parse_axis, run_sweep
+    from ..io.sweep import estimate_sweep, parse_axis, run_sweep
 
+    make = sweep_class(o)  # Sweep, or a CompliantSweep of the --tangential law
     if o["sphere"] is None:
         for name in SPHERE_ONLY:
             if _given(ctx, name):
@@ -322,7 +325,7 @@ def sweep_command(
                 raise click.UsageError(f"{_flag(name)} needs --planar (a planar body's sweep)")
         body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
         texts = _axes(o, samples)
-        sweep = Sweep(
+        sweep = make(
             body,
             {name: parse_axis(name, text) for name, text in texts.items()},
             samples=samples,
