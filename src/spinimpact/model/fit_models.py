@@ -76,9 +76,11 @@ class FitModel:
         }
         return f"{self.tangential}, {kinds[self.restitution]}"
 
-    def values(self, theta: np.ndarray) -> dict[str, float]:
-        """Parameter vector to a name -> value dictionary."""
-        return {n: float(v) for n, v in zip(self.names, theta, strict=True)}
+    def values(self, theta: Any) -> dict[str, Any]:
+        """Parameter vector to a name -> value dictionary (an entry may be an array of
+        values, which broadcasts against the bounces: a scan over it in one call)."""
+        return {n: float(v) if np.ndim(v) == 0 else np.asarray(v)
+                for n, v in zip(self.names, theta, strict=True)}  # fmt: skip
 
     def kappa(self, p: dict[str, float], speed: np.ndarray) -> np.ndarray:
         """Normal restitution at impact speeds ``|vy|`` (m/s), clipped to ``[0, 1]``."""
@@ -119,12 +121,12 @@ class FitModel:
         p = self.values(theta)
         if self.tangential != "rigid":
             a = self._compliant(p, bounces).after
-            return np.stack([a.vx, a.vy, a.omega], axis=-1)
+            return np.stack(np.broadcast_arrays(a.vx, a.vy, a.omega), axis=-1)
         kappa = self.kappa(p, -bounces.vy)
         b = self.body
         vx1, vy1, om1, _ = core.rebound(bounces.vx, bounces.vy, bounces.omega, b.mass, b.radius,
                                         self.zeta(p), p["mu"], kappa)  # fmt: skip
-        return np.stack([vx1, vy1, om1], axis=-1)
+        return np.stack(np.broadcast_arrays(vx1, vy1, om1), axis=-1)
 
     def contact(self, theta: np.ndarray, bounces: MeasuredBounces) -> tuple[np.ndarray, np.ndarray]:
         """Which bounces slide throughout at ``theta`` (regime ``slip``, eq. 4.15) and
