@@ -70,6 +70,7 @@ def mbf_figure(path: Path, poisson_ratio: float = 0.3, mu: float = 0.3) -> None:
     import matplotlib.pyplot as plt
 
     from spinimpact import solve
+    from spinimpact.core.compliance import maw_angles
     from spinimpact.core.tangential import mindlin_stiffness_ratio
 
     case = chung_ooi.TEST5[0]
@@ -87,14 +88,15 @@ def mbf_figure(path: Path, poisson_ratio: float = 0.3, mu: float = 0.3) -> None:
                                                 tangential=law)  # fmt: skip
     except ImportError as err:
         print(f"skipped Stronge: {err}", file=sys.stderr)
-    psi2 = {
-        k: r * np.asarray(v.after.vx + body.radius * v.after.omega) / (mu * np.asarray(v.after.vy))
-        for k, v in rows.items()
-    }
+
+    def recoil(vx, vy, omega):  # Maw et al.'s psi_2 (core.compliance.maw_angles)
+        vx, vy, omega = (np.asarray(x, dtype=float) for x in (vx, vy, omega))
+        return maw_angles(u0, -vn, vx + body.radius * omega, vy, mu, poisson_ratio).recoil
+
+    psi2 = {k: recoil(v.after.vx, v.after.vy, v.after.omega) for k, v in rows.items()}
     sims = [case.run(float(u), 0.0) for u in u0]
-    psi2["Hertz-Mindlin in time"] = np.array(
-        [r * float(s.after.vx + body.radius * s.after.omega) / (mu * float(s.after.vy))
-         for s in sims])  # fmt: skip
+    psi2["Hertz-Mindlin in time"] = recoil(*([getattr(s.after, n) for s in sims]
+                                             for n in ("vx", "vy", "omega")))  # fmt: skip
     fig, ax = plt.subplots(figsize=(7.5, 5.4), constrained_layout=True)
     for (label, values), style in zip(psi2.items(), ["--", "-.", "-"], strict=False):
         ax.plot(psi1, values, ls=style, lw=1.8, label=label)
