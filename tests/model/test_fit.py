@@ -153,6 +153,8 @@ def test_fixed_parameters_and_the_result_as_plain_values():
     assert tuple(res.columns()) == res.column_names()
     with pytest.raises(KeyError, match="kappa"):
         res["kappa"]
+    assert [e.name for e in fit(data, BALL)] == ["mu", "kappa"]
+    assert res[0] == res["mu"] and len(res) == 1
 
 
 def stall_the_optimizer(monkeypatch):

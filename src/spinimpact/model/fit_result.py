@@ -44,7 +44,8 @@ class Estimate:
 class FitResult(Result):
     """Everything :func:`spinimpact.fit` found, in the manner of SciPy's result objects.
 
-    Parameters are indexed by name: ``result["mu"]`` is an :class:`Estimate`. Arrays of
+    Parameters are indexed by name (or position): ``result["mu"]`` is an
+    :class:`Estimate`, and iterating gives every fitted parameter's. Arrays of
     shape ``(n, 3)`` hold one row per bounce and the columns ``after_vx, after_vy,
     after_omega`` (m/s, m/s, rad/s); NaN where a value was not measured.
 
@@ -157,12 +158,17 @@ class FitResult(Result):
     _shape_field = "estimate"
 
     def __getitem__(self, name: Any) -> Estimate:
+        if isinstance(name, int | np.integer) and not isinstance(name, bool):
+            name = self.names[name]  # the i-th fitted parameter (IndexError past the end)
         if not isinstance(name, str) or name not in self.names:
             raise KeyError(f"no fitted parameter {name!r}; the fitted ones are {self.names}")
         i = self.names.index(name)
         return Estimate(name, float(self.estimate[i]), float(self.standard_error[i]),
                         float(self.interval_low[i]), float(self.interval_high[i]),
                         bool(self.one_sided[i]))  # fmt: skip
+
+    def __iter__(self):  # type: ignore[no-untyped-def]
+        return (self[n] for n in self.names)
 
     @property
     def identifiability(self) -> str:
