@@ -185,3 +185,16 @@ def test_a_compliance_law_bounces_as_solve_sphere_with_it():
     assert "slip-reversal" in set(flight(ball, "hard", tangential=Walton(0.4), **kw).bounces.regime)
     with pytest.raises(TypeError, match="tangential must be"):
         flight(ball, "hard", tangential="walton", **kw)
+
+
+def test_a_ball_placed_on_the_ground_slides_and_rolls_without_bouncing():
+    ball, ground = BALLS["soccer"], GROUNDS["pitch"]
+    f = flight(ball, ground, speed=3.0, angle=0.0, height=ball.radius)
+    assert int(f.bounce_count) == 0 and str(f.stop) == "rest" and np.isnan(f.flight_time)
+    # no spin: the slip is the speed; it stops at mu g zeta, the speed falls at mu g meanwhile
+    zeta = ball.body.zeta
+    t1 = 3.0 / (ground.mu * G * zeta)
+    v1 = 3.0 - ground.mu * G * t1
+    x = 3.0 * t1 - 0.5 * ground.mu * G * t1**2 + v1**2 / (2 * ground.rolling * G)
+    assert float(f.final_position.x) == pytest.approx(x, rel=1e-13)
+    assert float(f.final_time) == pytest.approx(t1 + v1 / (ground.rolling * G), rel=1e-13)

@@ -94,17 +94,32 @@ def fly(
     path: list = []
     exact = aero.drag == 0 and aero.lift == 0 and aero.spin_decay == 0
     ground = {"mass": mass, "radius": radius, "inertia": inertia, "zeta": zeta, "mu": mu}
-    active, arc = np.arange(n), 0
+
+    def settle(idx: np.ndarray) -> None:
+        """Slide and roll the balls ``idx`` from where they are to rest or ``t_stop``."""
+        if not idx.size:
+            return
+        roll, pieces = roll_to_rest(t[idx], p[idx], v[idx], w[idx], rolling=rolling,
+                                    gravity=aero.gravity, t_stop=t_stop,
+                                    samples=51 if record else 0, **ground)  # fmt: skip
+        t[idx], p[idx], v[idx], w[idx] = roll.time, roll.position, roll.velocity, roll.spin
+        stop[idx] = np.where(roll.at_rest, 0, 1)
+        path.extend((idx[i], ts, ps) for i, ts, ps in pieces)
+
+    # a ball placed on the ground and moving along it (|v_y| < settle_speed) slides and rolls
+    placed = (p[:, 1] <= radius) & (np.abs(v[:, 1]) < settle_speed)
+    apex_h[placed], apex_t[placed] = p[placed, 1], 0.0
+    settle(np.flatnonzero(placed))
+    active, arc = np.flatnonzero(~placed), 0
     while active.size:
         if exact:
             seg = parabola_to_ground(t[active], p[active], v[active], w[active],
                                      gravity=aero.gravity, radius=radius, t_stop=t_stop,
                                      record=record)  # fmt: skip
         else:
-            seg = integrate_to_ground(
-                t[active], p[active], v[active], w[active], aero,
-                radius=radius, t_stop=t_stop, dt=dt, record=record,
-            )  # fmt: skip
+            seg = integrate_to_ground(t[active], p[active], v[active], w[active], aero,
+                                      radius=radius, t_stop=t_stop, dt=dt,
+                                      record=record)  # fmt: skip
         path += [(active[i], ts, ps) for i, ts, ps in seg.path]
         if arc == 0:
             apex_h[active], apex_t[active] = seg.apex_height, seg.apex_time
@@ -122,19 +137,7 @@ def fly(
         count[hi] += 1
         full = count[hi] >= nb
         stop[hi[full]] = 2
-        settle = hi[~full & (b.velocity[:, 1] < settle_speed)]
-        if settle.size:
-            roll, pieces = roll_to_rest(t[settle], p[settle], v[settle], w[settle],
-                                        rolling=rolling, gravity=aero.gravity, t_stop=t_stop,
-                                        samples=51 if record else 0, **ground)  # fmt: skip
-            t[settle], p[settle], v[settle], w[settle] = (
-                roll.time,
-                roll.position,
-                roll.velocity,
-                roll.spin,
-            )
-            stop[settle] = np.where(roll.at_rest, 0, 1)
-            path += [(settle[i], ts, ps) for i, ts, ps in pieces]
+        settle(hi[~full & (b.velocity[:, 1] < settle_speed)])
         active = hi[~full & (b.velocity[:, 1] >= settle_speed)]
         arc += 1
     return Flights(count, b_time, out["pos"], out["vb"], out["wb"], out["va"], out["wa"], regime,
