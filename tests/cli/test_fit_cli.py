@@ -72,6 +72,13 @@ def test_fit_prints_the_table_and_writes_json_and_pictures(tmp_path):
                                                           "fit.json", "fit.png"]  # fmt: skip
 
 
+def test_without_sigmas_the_goodness_of_fit_is_not_claimed(tmp_path, capsys):
+    main(["fit", str(bounce_file(tmp_path)), "--radius", "0.033"])
+    out = capsys.readouterr().out
+    assert "not testable without sigmas" in out and "chi2 =" not in out
+    assert "one sigma estimated" in out
+
+
 def test_drop_tests(tmp_path, capsys):
     src = tmp_path / "drops.csv"
     src.write_text("drop_height,rebound_height\n1.0,0.64\n0.5,0.33\n0.25,0.17\n")
@@ -136,4 +143,4 @@ def test_a_compliance_model_and_the_goodness_of_fit(tmp_path, capsys):
     main(["fit", str(src), "--radius", "0.033", "--model", "walton"])
     out = capsys.readouterr().out
     assert "walton" in out and "beta0" in out
-    assert "goodness of fit: p = " in out and "does not explain" not in out
+    assert "reduced chi2" in out and "p = " in out and "does not explain" not in out

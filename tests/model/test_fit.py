@@ -222,6 +222,8 @@ def test_unknown_and_missing_columns():
         ({"confidence": 0.3}, ValueError, r"confidence must be in \(0.5, 1\)"),
         ({"confidence": "high"}, TypeError, "confidence"),
         ({"free_gyration": 1}, TypeError, "free_gyration"),
+        ({"start": {"mu": "x"}}, TypeError, r"start\['mu'\]"),
+        ({"start": {"nu": 0.3}}, ValueError, "start names an unknown parameter 'nu'"),
     ],
 )  # fmt: skip
 def test_bad_options_are_refused_by_name(kwargs, error, match):
@@ -248,3 +250,13 @@ def test_the_p_value_flags_sigmas_that_are_too_small():
     noisy = fit(bounces(after, vx, vy, om, noise=5.0), BALL)  # sigmas claim 5x too little
     assert noisy.p_value < 1e-6
     assert np.isnan(fit(bounces(after, vx, vy, om, noise=1.0, sigmas=False), BALL).p_value)
+
+
+def test_a_model_that_gives_no_number_is_an_error_not_a_silent_fit(monkeypatch):
+    from spinimpact.model.fit_models import FitModel
+
+    vx, vy, om = incidences(10)
+    data = bounces(solve(BALL, vx, vy, om, mu=0.3, kappa=0.7).after, vx, vy, om)
+    monkeypatch.setattr(FitModel, "predict", lambda self, theta, b: np.full((len(b), 3), np.nan))
+    with pytest.raises(ValueError, match="non-finite rebound at mu = "):
+        fit(data, BALL, fixed={"kappa": 0.7}, start={"mu": 0.2})

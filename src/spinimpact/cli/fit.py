@@ -137,16 +137,18 @@ def _print(res: Any) -> None:
     for name, value in res.fixed.items():
         table.add_row(Text(name), f"{value:.5g}", "fixed", "")
     console.print(table)
-    sig = "sigmas given" if res.sigma_given else f"sigma estimated: {res.scale:.3g} m/s"
+    sig = "sigmas given" if res.sigma_given else f"one sigma estimated: {res.scale:.3g} m/s"
     console.print(Text(f"{res.n_bounces} bounces, {res.n_observations} measured values, "
                        f"{res.dof} degrees of freedom ({sig})"))  # fmt: skip
-    console.print(Text(f"chi2 = {res.chi2:.4g}, reduced chi2 = {res.reduced_chi2:.4g}, "
-                       f"AIC = {res.aic:.5g}, BIC = {res.bic:.5g}"))  # fmt: skip
     if res.sigma_given:
         note = ""
         if res.p_value < 1e-3:
             note = ": the model does not explain the data within the given sigmas"
-        console.print(Text(f"goodness of fit: p = {res.p_value:.3g}{note}"))
+        console.print(Text(f"chi2 = {res.chi2:.4g}, reduced chi2 = {res.reduced_chi2:.4g}, "
+                           f"p = {res.p_value:.3g}{note}"))  # fmt: skip
+    else:
+        console.print(Text("goodness of fit: not testable without sigmas"))
+    console.print(Text(f"AIC = {res.aic:.5g}, BIC = {res.bic:.5g}"))
     if res.n_sliding or res.n_sticking:
         console.print(Text(f"friction: {res.identifiability}"))
 

@@ -181,10 +181,14 @@ def fit(
     fm = make_model(body, bounces, tangential=model, restitution=restitution,
                     free_gyration=free_gyration, reference_speed=reference_speed)  # fmt: skip
     held = _fixed(fm, fixed)
-    begin = dict(start or {})
-    for name in begin:
+    if start is not None and not isinstance(start, Mapping):
+        raise TypeError(f"start must be a dict of parameter name to value, got {start!r}")
+    begin = {}
+    for name, value in (start or {}).items():
         if name not in fm.names:
-            raise ValueError(f"start names an unknown parameter {name!r}")
+            raise ValueError(f"start names an unknown parameter {name!r}; "
+                             f"this model has {', '.join(fm.names)}")  # fmt: skip
+        begin[name] = setting(f"start[{name!r}]", value)
     theta = _start(fm, bounces, {**begin, **held})
     for p in fm.parameters:  # a starting value strictly inside its bounds
         i = fm.names.index(p.name)

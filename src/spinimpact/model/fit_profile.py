@@ -58,6 +58,9 @@ class Problem:
         """Weighted residuals ``(f(theta) - y)/sigma`` of the measured values."""
         self.evaluations += 1
         pred = self.model.predict(self.full(x), self.bounces)[self.mask]
+        if not np.all(np.isfinite(pred)):
+            at = ", ".join(f"{k} = {v:.6g}" for k, v in self.model.values(self.full(x)).items())
+            raise ValueError(f"the model gives a non-finite rebound at {at}")
         return (pred - self.observed) * self.weight
 
     def chi2(self, x: np.ndarray) -> float:
