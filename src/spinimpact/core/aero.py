@@ -137,19 +137,24 @@ def derivatives(velocity, spin, c: AeroConstants):
     acceleration, spin_rate : ndarray, shape (..., 3)
         m/s^2 and rad/s^2.
     """
-    speed = _speed(velocity)
-    acc = -c.drag * speed[..., None] * velocity
-    acc[..., 1] -= c.gravity
+    vx, vy, vz = velocity[..., 0], velocity[..., 1], velocity[..., 2]
+    speed = np.sqrt(vx * vx + vy * vy + vz * vz)
+    drag = c.drag * speed
+    ax, ay, az = -drag * vx, -drag * vy - c.gravity, -drag * vz
     if c.lift != 0.0:
-        # R (omega x v) / (1/a + S/C_max), written as k_l (omega x v) / (1 + (a/C_max) S)
-        spin_speed = _speed(spin)
+        # R (omega x v) / (1/a + S/C_max), written as k_l (omega x v) / (1 + (a/C_max) S);
+        # it vanishes with v, so zero speed gives zero lift (no division by |omega|)
+        wx, wy, wz = spin[..., 0], spin[..., 1], spin[..., 2]
+        moving = speed > 0
         with np.errstate(divide="ignore", invalid="ignore"):
-            s = np.where(speed > 0, c.radius * spin_speed / np.where(speed > 0, speed, 1.0), 0.0)
-        factor = c.lift / (1.0 + c.saturation * s)
-        # zero speed: the force R(omega x v)/(...) -> 0 with v; the formula gives 0 there
-        factor = np.where(speed > 0, factor, 0.0)
-        acc += factor[..., None] * np.cross(spin, velocity)
-    spin_rate = -c.spin_decay * speed[..., None] * spin
+            s = c.radius * np.sqrt(wx * wx + wy * wy + wz * wz) / np.where(moving, speed, 1.0)
+        f = np.where(moving, c.lift / (1.0 + c.saturation * s), 0.0)
+        ax = ax + f * (wy * vz - wz * vy)
+        ay = ay + f * (wz * vx - wx * vz)
+        az = az + f * (wx * vy - wy * vx)
+    acc = np.empty(np.shape(velocity))
+    acc[..., 0], acc[..., 1], acc[..., 2] = ax, ay, az
+    spin_rate = (-c.spin_decay * speed)[..., None] * spin
     return acc, spin_rate
 
 

@@ -140,8 +140,8 @@ def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, rad
     apex_t = np.where(falling, t, np.nan)
     path: list = [(np.arange(n), t[:, None].copy(), p[:, None, :].copy())] if record else []
     active = np.flatnonzero(t < t_stop)
+    ta, pa, va, wa = t[active], p[active], v[active], w[active]  # the balls in the air
     while active.size:
-        ta, pa, va, wa = t[active], p[active], v[active], w[active]
         h = np.minimum(dt, t_stop - ta)
         p1, v1, w1 = rk4_step(pa, va, wa, h, c)
         cross = p1[:, 1] < radius
@@ -153,14 +153,20 @@ def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, rad
             s, pe, ve, we = _event(pa[cross], va[cross], wa[cross], p1[cross], v1[cross],
                                    h[cross], c, radius)  # fmt: skip
             p1[cross], v1[cross], w1[cross] = pe, ve, we
-            h = h.copy()
             h[cross] = s
             hit[active[cross]] = True
         t_new = np.where(h == t_stop - ta, t_stop, ta + h)
-        t[active], p[active], v[active], w[active] = t_new, p1, v1, w1
         if record:
             path.append((active, t_new[:, None], p1[:, None, :]))
-        active = active[~cross & (t_new < t_stop)]
+        flying = ~cross & (t_new < t_stop)
+        if flying.all():
+            ta, pa, va, wa = t_new, p1, v1, w1
+            continue
+        done = ~flying  # write back the balls whose arc ended; keep the others
+        t[active[done]], p[active[done]] = t_new[done], p1[done]
+        v[active[done]], w[active[done]] = v1[done], w1[done]
+        active = active[flying]
+        ta, pa, va, wa = t_new[flying], p1[flying], v1[flying], w1[flying]
     return Segment(t, p, v, w, hit, apex_h, apex_t, path)
 
 
