@@ -260,3 +260,37 @@ def test_a_model_that_gives_no_number_is_an_error_not_a_silent_fit(monkeypatch):
     monkeypatch.setattr(FitModel, "predict", lambda self, theta, b: np.full((len(b), 3), np.nan))
     with pytest.raises(ValueError, match="non-finite rebound at mu = "):
         fit(data, BALL, fixed={"kappa": 0.7}, start={"mu": 0.2})
+
+
+def test_random_truths_are_recovered_from_exact_data():
+    """40 random (mu, kappa, body) truths over mixed sliding and sticking bounces: the
+    start scan and the optimizer find the one minimum every time."""
+    rng = np.random.default_rng(40)
+    for _ in range(40):
+        mu, kappa = rng.uniform(0.05, 1.0), rng.uniform(0.3, 0.95)
+        body = Body.preset(rng.choice(["solid-disk", "ring", "solid-sphere"]), mass=1.0,
+                           radius=rng.uniform(0.01, 0.2))  # fmt: skip
+        n = 20
+        vy = -rng.uniform(0.5, 8.0, n)
+        vx = rng.uniform(-8.0, 8.0, n)
+        om = rng.normal(0.0, 3.0, n) / float(body.radius)
+        after = solve(body, vx, vy, om, mu=mu, kappa=kappa)
+        if not np.any(np.asarray(after.regime) == "slip"):
+            continue
+        res = fit(bounces(after.after, vx, vy, om), body)
+        assert res["mu"].estimate == pytest.approx(mu, rel=1e-6)
+        assert res["kappa"].estimate == pytest.approx(kappa, rel=1e-6)
+
+
+@pytest.mark.parametrize("mu, kappa", [(0.0, 0.7), (0.3, 1.0)])
+def test_a_truth_on_a_bound_is_an_end_of_its_interval(mu, kappa):
+    vx, vy, om = incidences(20)
+    data = bounces(solve(BALL, vx, vy, om, mu=mu, kappa=kappa).after, vx, vy, om, noise=1.0)
+    res = fit(data, BALL)
+    assert res["mu"].low <= mu <= res["mu"].high
+    assert res["kappa"].low <= kappa <= res["kappa"].high
+    if mu == 0.0:
+        # every bounce slides on a smooth surface: together they bound mu from above
+        assert res["mu"].low == 0.0 and res["mu"].high < 0.01 and res.n_sliding == 20
+    else:
+        assert res["kappa"].high == 1.0
