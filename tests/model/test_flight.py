@@ -198,3 +198,42 @@ def test_a_ball_placed_on_the_ground_slides_and_rolls_without_bouncing():
     x = 3.0 * t1 - 0.5 * ground.mu * G * t1**2 + v1**2 / (2 * ground.rolling * G)
     assert float(f.final_position.x) == pytest.approx(x, rel=1e-13)
     assert float(f.final_time) == pytest.approx(t1 + v1 / (ground.rolling * G), rel=1e-13)
+
+
+def test_bounces_in_air_match_an_independent_integration_with_events():
+    # SciPy's DOP853 with event location and solve_sphere at each impact, against flight()
+    from scipy.integrate import solve_ivp
+
+    from spinimpact.core.aero import aero_constants
+
+    ball, ground = BALLS["tennis"], GROUNDS["clay"]
+    f = flight(ball, ground, speed=45.0, angle=-4.0, direction=10.0, height=2.7,
+               spin_rpm=2500, spin_axis=[0.3, 0.5, -1.0], max_bounces=3, dt=2e-3)  # fmt: skip
+    c = aero_constants(mass=ball.mass, radius=ball.radius, inertia=ball.body.inertia,
+                       density=1.225, drag_coefficient=ball.drag_coefficient,
+                       lift_slope=ball.lift_slope, lift_max=ball.lift_max,
+                       spin_decay=ball.spin_decay, gravity=G)  # fmt: skip
+
+    def rhs(_, y):
+        v, w = y[3:6], y[6:9]
+        speed = np.linalg.norm(v)
+        lift = c.lift / (1 + c.saturation * ball.radius * np.linalg.norm(w) / speed)
+        acc = -c.drag * speed * v + lift * np.cross(w, v) - np.array([0, G, 0])
+        return np.concatenate([v, acc, -c.spin_decay * speed * w])
+
+    def ground_hit(_, y):
+        return y[1] - ball.radius
+
+    ground_hit.terminal, ground_hit.direction = True, -1
+    v0, w0 = launch(45.0, -4.0, 10.0, 2500, [0.3, 0.5, -1.0])
+    y, t = np.concatenate([[0, 2.7, 0], v0, w0]), 0.0
+    for k in range(3):
+        sol = solve_ivp(rhs, (t, t + 10), y, method="DOP853", rtol=1e-12, atol=1e-12,
+                        events=ground_hit)  # fmt: skip
+        t, y = sol.t_events[0][0], sol.y_events[0][0]
+        assert f.bounces.time[k] == pytest.approx(t, abs=1e-9)
+        np.testing.assert_allclose(f.bounces.position.array[k], y[:3], atol=1e-8)
+        np.testing.assert_allclose(f.bounces.before.velocity[k], y[3:6], atol=1e-8)
+        imp = solve_sphere(ball.body, y[3:6], y[6:9], mu=ground.mu, kappa=ground.kappa)
+        y = np.concatenate([y[:3], imp.after.velocity, imp.after.spin])
+        np.testing.assert_allclose(f.bounces.after.spin[k], y[6:9], rtol=1e-8, atol=1e-6)
