@@ -53,6 +53,7 @@ References
 
 from __future__ import annotations
 
+import functools
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -61,7 +62,7 @@ __all__ = ["StrongeRebound", "stronge_restitution"]
 
 _HALF_PI = 0.5 * np.pi
 #: Samples per stick window, and the sample step in units of 1/(c Omega).
-_SAMPLES, _STEP = 64, 0.2
+_SAMPLES, _STEP = 16, 0.2
 #: Most phases (stick, slip or stick windows) before giving up: far above what any
 #: admissible input needs (about (pi/2) c Omega / (_SAMPLES _STEP) windows a phase).
 _MAX_ROUNDS = 200_000
@@ -93,57 +94,91 @@ def _stick(t, ta, ua, xa, c, r, zeta, omega):
 
 
 def _stick_end(ta, ua, xa, c, r, zeta, mu, omega, comp, amp):
-    """First ``t`` after ``ta``, within one window of samples, where ``|x|`` exceeds
-    ``mu n`` (by more than rounding); ``inf`` if none. Also returns the window's end."""
+    """The first ``t`` after ``ta``, within one window of samples, where ``|x|`` exceeds
+    ``mu n`` by more than rounding (``inf`` if none), and how far the window was checked."""
     w = c * omega
     step = np.minimum(_STEP / w, _HALF_PI / _SAMPLES)
     grid = np.minimum(ta[:, None] + step[:, None] * np.arange(1, _SAMPLES + 1), _HALF_PI)
     lo = np.concatenate([ta[:, None], grid[:, :-1]], axis=1)
-    col = [a[:, None] for a in (ta, ua, xa, c, r, zeta, omega, mu, 1e-12 * mu)]
+    shift = np.where(comp, 0.0, _HALF_PI)  # n = sin(t + shift), n' = cos(t + shift)
+    col = [a[:, None] for a in (ta, ua, xa, c, r, zeta, omega, mu, 1e-12 * mu, shift)]
     end = np.full(ta.shape, np.inf)
+    checked = grid[:, -1].copy()
     for sign in (1.0, -1.0):  # h = mu n - sign x + tol, smooth; stick needs both >= 0
-        hv, dh = _h(grid, col, comp[:, None], sign)
-        h0, dh0 = _h(lo[:, :1], col, comp[:, None], sign)
-        # a dip below zero between two samples: h falls, then rises, its least value < 0
+        hv, dh = _h(grid, col, sign)
+        h0, dh0 = _h(lo[:, :1], col, sign)
+        # a dip below zero between two samples: h falls, then rises, and |h''| <= mu +
+        # (c Omega)^2 amp does not keep it above zero on the interval
         dip = (hv >= 0) & (np.concatenate([dh0, dh[:, :-1]], axis=1) < 0) & (dh > 0)
-        # ... unless |h''| <= mu + (c Omega)^2 |x|max keeps it above zero on the interval
         bound = (col[7] + (col[3] * col[6]) ** 2 * amp[:, None]) * (grid - lo) ** 2 / 8
         dip &= np.minimum(hv, np.concatenate([h0, hv[:, :-1]], axis=1)) < bound
-        rows = np.flatnonzero(dip.any(axis=1))
-        if rows.size:  # the least value: where h' changes sign
-            sub = [a[rows] for a in col]
-            a, b, d = lo[rows], grid[rows], dip[rows]
-            for _ in range(60):
-                mid = 0.5 * (a + b)
-                falling = _h(mid, sub, comp[rows, None], sign)[1] < 0
-                a, b = np.where(d & falling, mid, a), np.where(d & ~falling, mid, b)
-            tmin = 0.5 * (a + b)
-            d &= _h(tmin, sub, comp[rows, None], sign)[0] < 0
-            dip[rows] = d
-            grid_or_min = grid.copy()
-            grid_or_min[rows] = np.where(d, tmin, grid[rows])
-        else:
-            grid_or_min = grid
         hit = (hv < 0) | dip
         rows = np.flatnonzero(hit.any(axis=1))
         if not rows.size:
             continue
         first = np.argmax(hit[rows], axis=1)
-        a, b = lo[rows, first][:, None], grid_or_min[rows, first][:, None]
         sub = [x[rows] for x in col]
-        for _ in range(60):  # the crossing, from h >= 0 at a to h < 0 at b
-            mid = 0.5 * (a + b)
-            below = _h(mid, sub, comp[rows, None], sign)[0] < 0
-            a, b = np.where(below, a, mid), np.where(below, mid, b)
-        end[rows] = np.minimum(end[rows], b[:, 0])
-    return end, grid[:, -1]
+        a, b = lo[rows, first], grid[rows, first]
+        real = np.ones(rows.size, dtype=bool)
+        d = np.flatnonzero(dip[rows, first])
+        if d.size:  # the least value of a candidate dip, where h' changes sign
+            dsub = [x[d] for x in sub]
+            tmin = _root(a[d], b[d], functools.partial(_slope, col=dsub, sign=sign))
+            real[d] = _h(tmin[:, None], dsub, sign)[0][:, 0] < 0
+            b[d] = tmin
+        root = _root(a, b, functools.partial(_h1, col=sub, sign=sign))
+        # a dip that stays above zero: checked up to its interval's end, go on from there
+        stop = np.where(real, root, grid[rows, first])
+        checked[rows] = np.minimum(checked[rows], stop)
+        end[rows] = np.where(real, np.minimum(end[rows], root), end[rows])
+    end = np.where(end <= checked, end, np.inf)  # only an end before any unchecked stretch
+    return end, checked
 
 
-def _h(t, col, comp, sign):
-    """``mu n - sign x + tol`` and its derivative in ``t`` during a stick phase."""
-    ta, ua, xa, c, r, zeta, omega, mu, tol = col
+def _root(a, b, f):
+    """Where ``f(t, rows)`` (the value and the derivative at ``t`` of those rows) crosses
+    from ``>= 0`` at ``a`` to ``< 0`` at ``b``, per row: Newton's steps kept inside the
+    bracket, bisection where a step would leave it, to rounding."""
+    a, b = a.copy(), b.copy()
+    t = 0.5 * (a + b)
+    live = np.arange(t.size)
+    for _ in range(100):
+        value, slope = f(t[live], live)
+        below = value < 0
+        a[live] = np.where(below, a[live], t[live])
+        b[live] = np.where(below, t[live], b[live])
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            newton = t[live] - value / slope
+        inside = (newton > a[live]) & (newton < b[live])
+        step = np.where(inside, newton, 0.5 * (a[live] + b[live]))
+        done = np.abs(step - t[live]) <= 1e-15 * np.maximum(np.abs(t[live]), 1.0)
+        t[live] = step
+        live = live[~done]
+        if not live.size:
+            break
+    return t
+
+
+def _h1(t, rows, col, sign):
+    """:func:`_h` at one ``t`` for each of ``rows``."""
+    value, slope = _h(t[:, None], [x[rows] for x in col], sign)
+    return value[:, 0], slope[:, 0]
+
+
+def _slope(t, rows, col, sign):
+    """``-h'`` and ``-h''`` of :func:`_h` for ``rows`` (a dip is least where ``h' = 0``)."""
+    ta, ua, xa, c, r, zeta, omega, mu, tol, shift = (x[rows, 0] for x in col)
     u, x = _stick(t, ta, ua, xa, c, r, zeta, omega)
-    return mu * _n(t, comp) - sign * x + tol, mu * _dn(t, comp) - sign * c * r * u
+    dh = mu * np.cos(t + shift) - sign * c * r * u
+    d2h = -mu * np.sin(t + shift) + sign * (c * omega) ** 2 * x
+    return -dh, -d2h
+
+
+def _h(t, col, sign):
+    """``mu n - sign x + tol`` and its derivative in ``t`` during a stick phase."""
+    ta, ua, xa, c, r, zeta, omega, mu, tol, shift = col
+    u, x = _stick(t, ta, ua, xa, c, r, zeta, omega)
+    return mu * np.sin(t + shift) - sign * x + tol, mu * np.cos(t + shift) - sign * c * r * u
 
 
 def stronge_restitution(slip, vy, zeta, mu, kappa, stiffness_ratio):
