@@ -2,7 +2,7 @@
 
 Not the closed form of ``spinimpact.core.stronge``: real time, real stiffnesses and masses,
 the normal spring's compression ``delta`` as a state, SciPy's ``solve_ivp`` (DOP853, tight
-tolerances) with events for every change: end of compression, stick -> slip (``|k_t xi|``
+tolerances, short steps) with events for every change: end of compression, stick -> slip (``|k_t xi|``
 reaching ``mu N``), slip -> stick (the contact point's velocity on the surface reaching
 zero), separation (``N = 0``).
 """
@@ -83,8 +83,10 @@ def integrate(slip, vy, zeta, mu, kappa, ratio, *, mass=0.3, k_n=2.0e5):
         events = [compression_end] if ld else [separation]
         events.append(stick_limit if stick else slip_stop)
         period = 2 * np.pi / np.sqrt(k_n * w_nn)
+        # steps of at most period/200: an event is found only where its function changes
+        # sign between steps, and a short slip phase can hide inside one long step
         sol = solve_ivp(rhs, (t, t + 2 * period), y, method="DOP853", rtol=RTOL, atol=ATOL,
-                        events=events, dense_output=False)  # fmt: skip
+                        events=events, max_step=period / 200)  # fmt: skip
         t, y = sol.t[-1], sol.y[:, -1].copy()
         e_t = mass * sol.y[2] ** 2 / (2 * zeta) + (
             k_t * sol.y[3] ** 2 / 2 if stick else mu**2 * 0.0
