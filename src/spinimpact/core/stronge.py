@@ -104,9 +104,13 @@ def _stick_end(ta, ua, xa, c, r, zeta, mu, omega, comp, amp):
     col = [a[:, None] for a in (ta, ua, xa, c, r, zeta, omega, mu, 1e-12 * mu, shift)]
     end = np.full(ta.shape, np.inf)
     checked = grid[:, -1].copy()
+    u, x = _stick(grid, *col[:7])  # shared by both signs
+    n, dn = col[7] * np.sin(grid + col[9]), col[7] * np.cos(grid + col[9])
+    n0, dn0 = col[7] * np.sin(col[0] + col[9]), col[7] * np.cos(col[0] + col[9])
+    cr = col[3] * col[4]
     for sign in (1.0, -1.0):  # h = mu n - sign x + tol, smooth; stick needs both >= 0
-        hv, dh = _h(grid, col, sign)
-        h0, dh0 = _h(lo[:, :1], col, sign)
+        hv, dh = n - sign * x + col[8], dn - sign * cr * u
+        h0, dh0 = n0 - sign * col[2] + col[8], dn0 - sign * cr * col[1]  # at t_a: (u_a, x_a)
         # a dip below zero between two samples: h falls, then rises, and |h''| <= mu +
         # (c Omega)^2 amp does not keep it above zero on the interval
         dip = (hv >= 0) & (np.concatenate([dh0, dh[:, :-1]], axis=1) < 0) & (dh > 0)
