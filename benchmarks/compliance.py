@@ -10,21 +10,12 @@ literature's stiffness ratio (Poisson's ratio 0.3) and at a stiff contact (``r =
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
 from spinimpact import Body, Stronge, Walton, solve
 
-
-def best(fn, repeat: int = 5) -> float:
-    """Best wall time of ``repeat`` runs (the least disturbed by the machine)."""
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times)
+from .bench import best
 
 
 def main() -> None:

@@ -4,7 +4,6 @@ errors with exit status 2 for a law without its parameter or a parameter without
 from __future__ import annotations
 
 import json
-import signal
 import subprocess
 import sys
 
@@ -14,16 +13,13 @@ import pytest
 from spinimpact import Body, Stronge, Walton, solve
 from spinimpact.cli import main
 
+from tests.cli.test_errors import _keep_sigterm  # noqa: F401 (an autouse fixture)
 
-@pytest.fixture(autouse=True)
-def _keep_sigterm():
-    previous = signal.getsignal(signal.SIGTERM)
-    yield
-    signal.signal(signal.SIGTERM, previous)
+BALL = Body.solid_sphere(mass=1.0, radius=0.1)
 
 
 def run_main(capsys, *args):
-    """Run the command in this process; (exit status, stdout, stderr)."""
+    """Run the command in this process; (exit status, stdout, stderr); 0 when it returns."""
     try:
         main([str(a) for a in args])
         status = 0
@@ -31,9 +27,6 @@ def run_main(capsys, *args):
         status = exit_.code or 0
     out = capsys.readouterr()
     return status, out.out, out.err
-
-
-BALL = Body.solid_sphere(mass=1.0, radius=0.1)
 
 
 @pytest.mark.parametrize(
