@@ -3,35 +3,13 @@ bounce table printed, files written atomically, many balls with their spread, an
 as one line with exit status 2."""
 
 import json
-import signal
 import subprocess
 import sys
 
 import numpy as np
 import pytest
 
-from spinimpact.cli import main
 from spinimpact.model.flight import flight
-
-
-@pytest.fixture
-def cli(capsys):
-    """Run ``spinimpact ...`` in this process: (exit status, stdout, stderr)."""
-    previous = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
-
-    def call(*args):
-        try:
-            main(list(map(str, args)))
-            status = 0
-        except SystemExit as exit_:
-            status = exit_.code
-        out = capsys.readouterr()
-        return status, out.out, out.err
-
-    yield call
-    for s, handler in previous.items():
-        signal.signal(s, handler)
-
 
 SERVE = ("--ball", "tennis", "--surface", "hard", "--speed", "180", "--speed-unit", "km/h",
          "--angle", "-6", "--height", "2.8", "--spin-rpm", "2000", "--spin-axis", "topspin",
