@@ -30,7 +30,7 @@ ALIASES = {
     "spinimpact.report": "spinimpact.viz.report",
 }
 #: Public facades: short import paths for users, never imported by the package itself.
-FACADES = {"spinimpact.dynamics"}
+FACADES = {"spinimpact.dynamics", "spinimpact.contact_law"}
 
 #: What each layer may import from the package (besides itself).
 ALLOWED = {

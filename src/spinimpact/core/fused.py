@@ -7,8 +7,8 @@ each input once and write each output once, in parallel over cores.
 
 They perform the same IEEE operations in the same order as the NumPy kernels
 (no fast-math, no fused multiply-add), so the results are identical bit for
-bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba,
-:func:`rebound` falls back to the NumPy path.
+bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba, and
+below :data:`THRESHOLD` impacts where it is faster, :func:`rebound` takes the NumPy path.
 
 The compiled kernels are cached on disk (Numba's ``cache=True``) where Numba finds a
 writable place (``__pycache__`` beside this file, the user's cache folder under
@@ -23,8 +23,9 @@ import numpy as np
 
 from .._validation import require
 from .kinematics import rebound as _rebound_numpy
+from .scalar import rebound as _scalar_rebound
 
-__all__ = ["HAVE_NUMBA", "rebound"]
+__all__ = ["HAVE_NUMBA", "THRESHOLD", "rebound"]
 
 _NUMBA_ERROR: ImportError | None = None  #: why Numba did not import, if it did not
 try:  # pragma: no cover - depends on the optional extra
@@ -86,15 +87,31 @@ if HAVE_NUMBA:
             out_om[i] = omega[i] + (z - 1.0) * f1 / (m * r)
 
 
+#: Fewest impacts for which ``fused=None`` runs the Numba kernel: below it the NumPy path is
+#: faster (starting the kernel's thread pool costs tens of microseconds), with the same bits.
+THRESHOLD = 10_000
+
+
+def _frozen(a):
+    """A read-only flat view of ``a`` (never the caller's array itself): broadcast views
+    must not be written, and Numba asks for the flag to be explicit (else NumPy warns)."""
+    v = (a if a.ndim == 1 else np.ascontiguousarray(a).reshape(-1)).view()
+    v.setflags(write=False)
+    return v
+
+
 def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=None):
     """Rebound ``(vx+, vy+, omega+)`` in one pass over memory.
 
-    Same arguments and results as :func:`spinimpact.core.rebound` (without
-    ``f1``), all broadcast to one shape. ``fused=None`` uses Numba when
-    installed; ``False`` forces the NumPy path; ``True`` requires Numba.
-    ``out`` may give three preallocated C-contiguous float64 arrays of the
-    broadcast shape to write into (avoids page-faulting fresh memory on every
-    call in a loop over chunks).
+    Same arguments and results as :func:`spinimpact.core.rebound` (without ``f1``), all
+    broadcast to one shape; the results are float64 arrays of that shape (0-d for one
+    impact), equal bit for bit whichever path computes them. ``fused=None`` picks the
+    fastest: the per-contact law on floats (:func:`spinimpact.core.scalar.rebound`) for one
+    impact, the NumPy path below :data:`THRESHOLD` impacts or without Numba, the Numba
+    kernel above; ``False`` forces the NumPy path; ``True`` requires Numba and runs its
+    kernel. ``out`` may give three preallocated C-contiguous float64 arrays of the
+    broadcast shape to write into (avoids page-faulting fresh memory on every call in a
+    loop over chunks).
 
     Raises
     ------
@@ -102,36 +119,45 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
         For ``fused=True`` without Numba, naming the ``[fast]`` extra.
     ValueError
         For an ``out`` that is not three C-contiguous float64 arrays of the shape.
+
+    Examples
+    --------
+    >>> vx, vy, omega = rebound(2.0, -3.0, 0.0, 1.0, 0.1, 3.5, 0.5, 0.8)
+    >>> vx.shape, round(float(vx) / 2.0, 12)   # the 5/7 rule of a solid sphere
+    ((), 0.714285714286)
     """
-    if fused is None:
-        fused = HAVE_NUMBA
     if fused and not HAVE_NUMBA:
         require("numba", "fused=True")  # raises ImportError naming the [fast] extra
         raise ImportError(f"fused=True needs numba, which failed to import: {_NUMBA_ERROR}")
     args = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in
                                  (vx, vy, omega, mass, radius, zeta, mu, kappa)))  # fmt: skip
-    if not fused:
-        return _rebound_numpy(*args)[:3]
     shape = args[0].shape
+    if out is not None and (len(out) != 3 or any(
+        o.shape != shape or not o.flags.c_contiguous or o.dtype != np.float64 for o in out
+    )):  # fmt: skip
+        raise ValueError(f"out must be three C-contiguous float64 arrays of shape {shape}")
+    size = args[0].size
+    if fused is None:
+        fused = HAVE_NUMBA and size >= THRESHOLD
+    if not fused:
+        if size == 1:  # one impact: floats, not 0-d arrays (a dozen NumPy calls saved)
+            values = _scalar_rebound(*(float(a.reshape(-1)[0]) for a in args))[:3]
+        else:
+            values = _rebound_numpy(*args)[:3]
+        if out is None:
+            out = tuple(np.empty(shape) for _ in range(3))
+        for target, value in zip(out, values, strict=True):
+            target[...] = value
+        return tuple(out)
     if out is None:
         out = tuple(np.empty(shape) for _ in range(3))
-    elif len(out) != 3 or any(
-        o.shape != shape or not o.flags.c_contiguous or o.dtype != np.float64 for o in out
-    ):
-        raise ValueError(f"out must be three C-contiguous float64 arrays of shape {shape}")
     targets = [o.reshape(-1) for o in out]
-    velocities = [np.ascontiguousarray(a).reshape(-1) for a in args[:3]]
+    velocities = [_frozen(a) for a in args[:3]]
     params = [np.asarray(p, dtype=np.float64) for p in (mass, radius, zeta, mu, kappa)]
     if all(p.size == 1 for p in params):  # the common sweep: one body, one surface
         _rebound_scalar(*velocities, *(float(p.reshape(-1)[0]) for p in params), *targets)
     else:
         # 1-D broadcast views (stride 0 for a repeated value) go in as they are:
         # copying them would cost more memory traffic than the kernel itself.
-        columns = [a if a.ndim == 1 else np.ascontiguousarray(a).reshape(-1) for a in args[3:]]
-        # read-only views (never the caller's own arrays): broadcast views must
-        # not be written, and Numba asks for the flag to be explicit
-        columns = [c.view() for c in columns]
-        for c in columns:
-            c.setflags(write=False)
-        _rebound_arrays(*velocities, *columns, *targets)
+        _rebound_arrays(*velocities, *(_frozen(a) for a in args[3:]), *targets)
     return tuple(out)

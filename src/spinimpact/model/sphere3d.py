@@ -17,6 +17,7 @@ import numpy as np
 from .. import core
 from .._validation import check, validated, vector3, whole
 from ..core import sphere3d as kernels
+from . import _fast_sphere
 from ._hooks import tangential_law
 from .body import Body
 from .impact import _restitution
@@ -271,6 +272,10 @@ def solve_sphere(
                                                         kappa=kappa, surface=surface)  # fmt: skip
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    kinds = (SphereImpact, State3, Vector, Surface)
+    one = _fast_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
+    if one is not None:  # one impact of plain numbers: the same SphereImpact, in microseconds
+        return one
     surface = Surface() if surface is None else surface
     if not isinstance(surface, Surface):
         raise TypeError(f"surface must be a spinimpact.Surface, got {type(surface).__name__}")
