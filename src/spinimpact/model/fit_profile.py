@@ -246,6 +246,9 @@ class _Profile:
                 break
             if g(b) >= 0:
                 break
+            if math.isfinite(bound) and a == xhat and g(bound) < 0:  # flat to the bound
+                end = math.inf if (is_mu and sign > 0) else bound
+                return end, self.seen[bound][1], True
             a, b = b, xhat + 2.0 * (b - xhat)
         else:
             return sign * math.inf, self.warm.copy(), True
