@@ -4,6 +4,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from spinimpact import Body, solve
 from spinimpact.core.contact import power_law_time_scale
@@ -232,3 +234,21 @@ def test_spring_rules_coincide_for_a_linear_normal_spring():
             time_scale=1e-5,
             spring="x",
         )
+
+
+@settings(max_examples=40)
+@given(
+    st.floats(0.05, 5.0),
+    st.floats(-5.0, 5.0),
+    st.floats(-2000.0, 2000.0),
+    st.floats(0.0, 1.0),
+    st.floats(0.05, 5.0),
+    st.sampled_from([0.0, 0.05, 0.3]),
+)
+def test_energy_never_increases_property(speed, vx, omega, mu, ratio, alpha):
+    """Hypothesis: any incidence, friction, stiffness ratio and Hunt-Crossley damping;
+    E never rises above 1e-8 E0 on the samples and the rebound keeps the cap."""
+    run = _hertz(vx, -speed, omega, mu, ratio, alpha)
+    assert np.diff(run.energy).max() <= 1e-8 * run.energy[0]
+    excess = np.abs(run.tangential_force) - mu * run.normal_force
+    assert excess.max() <= 1e-8 * (mu * run.normal_force.max() + 1e-300)
