@@ -60,6 +60,19 @@ def test_between_9_and_60_degrees():
     assert round(worst["rigid"], 3) == 0.118
 
 
+def test_the_smallest_angles_and_the_spring_rules():
+    angles = np.array([2.0275, 3.9282, 20.0845, 30.2218, 49.5459])
+    e_t = {label: model(angles, material)["e_t"] for label, model, material in kharaz.MODELS}
+    springs = [v for label, v in e_t.items() if label not in ("rigid", "Walton, beta0 = 0.33")]
+    assert all(0.82 <= x <= 1.005 for v in springs for x in v[:2])
+    assert min(x for v in springs for x in v[:2]) < 0.83  # Stronge at 4 degrees: 0.827
+    assert e_t["Walton, beta0 = 0.33"][:2] == pytest.approx([0.62, 0.62], abs=5e-4)
+    scaled = e_t["Hertz-Mindlin in time, scaled spring"][2:]
+    for rule in ("incremental", "total"):
+        other = e_t[f"Hertz-Mindlin in time, {rule} spring"][2:]
+        assert np.abs(other - scaled).max() < 0.011
+
+
 def test_small_angle_spring_rules_and_definitions():
     two_and_four = np.array([2.0275, 3.9282])
     inc = kharaz.incremental(two_and_four)["e_t"]
