@@ -294,3 +294,18 @@ def test_a_truth_on_a_bound_is_an_end_of_its_interval(mu, kappa):
         assert res["mu"].low == 0.0 and res["mu"].high < 0.01 and res.n_sliding == 20
     else:
         assert res["kappa"].high == 1.0
+
+
+def test_profiles_that_keep_finding_lower_chi2_are_a_warning(monkeypatch):
+    real = fit_module.intervals
+
+    def restless(prob, x, conf, se):
+        out = real(prob, x, conf, se)
+        out.better = x + 1e-3  # as if a profile had met a lower minimum every time
+        return out
+
+    monkeypatch.setattr(fit_module, "intervals", restless)
+    vx, vy, om = incidences(20)
+    data = bounces(solve(BALL, vx, vy, om, mu=0.3, kappa=0.7).after, vx, vy, om, noise=1.0)
+    with pytest.warns(FitWarning, match="several minima"):
+        fit(data, BALL)

@@ -41,8 +41,9 @@ def _start(fm: FitModel, bounces: MeasuredBounces, given: Mapping[str, float]) -
         elif p.name in ("kappa", "kappa_ref") or p.name.startswith("kappa_at_"):
             theta.append(k0)
         elif p.name == "exponent":
-            use = ok & (np.ptp(speed[ok]) > 0 if ok.sum() > 1 else False)
-            slope = np.polyfit(np.log(speed[use]), np.log(ratio[use]), 1)[0] if use.sum() > 1 else 0
+            slope = 0.0  # the log-log slope of the measured kappa over the speed, if any
+            if ok.sum() > 1 and np.ptp(speed[ok]) > 0:
+                slope = np.polyfit(np.log(speed[ok]), np.log(ratio[ok]), 1)[0]
             theta.append(float(np.clip(slope, -1.0, 1.0)))
         else:  # gyration
             theta.append(float(np.mean(fm.body.gyration)))
@@ -170,7 +171,7 @@ def fit(
         raise TypeError(
             f"bounces must be a spinimpact.MeasuredBounces, got {type(bounces).__name__}"
         )
-    if isinstance(free_gyration, bool) is False:
+    if not isinstance(free_gyration, bool):
         raise TypeError(f"free_gyration must be True or False, got {free_gyration!r}")
     conf = setting("confidence", confidence, low=0.5, rule="in (0.5, 1)")
     if conf >= 1.0:
@@ -206,17 +207,20 @@ def fit(
     if "mu" not in held and "mu" not in begin:
         prob.theta[fm.names.index("mu")] = prob.scan_mu()
     best = minimize(prob, prob.theta[free])
-    if not best.success:
-        warnings.warn(f"the fit did not converge: {best.message}", FitWarning, stacklevel=2)
-    for _ in range(3):
+    for attempt in range(3):
         x = best.x
         chi2 = prob.chi2(x)
         s2 = 1.0 if prob.sigma_given else chi2 / prob.dof
         cov, se = curvature(prob, x, s2)
         ivals = intervals(prob, x, conf, se)
-        if ivals.better is None:
+        if ivals.better is None or attempt == 2:
             break
         best = minimize(prob, ivals.better)  # a profile met a lower chi2: start again there
+    if not best.success:
+        warnings.warn(f"the fit did not converge: {best.message}", FitWarning, stacklevel=2)
+    elif ivals.better is not None:
+        text = "its profiles keep finding lower chi2 (several minima?); try other start values"
+        warnings.warn(f"the fit did not converge: {text}", FitWarning, stacklevel=2)
     return _result(prob, best, x, cov, se, ivals, conf, held)
 
 

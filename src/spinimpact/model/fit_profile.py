@@ -215,7 +215,8 @@ class _Profile:
             chi = 2.0 * float(out.cost)
             self.warm = xv
         r = (chi - self.chi0) / self.s2
-        if r < -1e-3 and (self.better is None or chi < self.prob.chi2(self.better)):
+        lower = r < -1e-3 and self.chi0 - chi > 1e-12 * (1.0 + self.chi0)  # beyond rounding
+        if lower and (self.better is None or chi < self.prob.chi2(self.better)):
             self.better = xv.copy()
         self.seen[v] = (r, xv.copy())
         return r
