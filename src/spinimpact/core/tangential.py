@@ -283,7 +283,7 @@ def integrate_tangential(
     if mu == 0.0:  # frictionless: F = 0 throughout (a slip phase that never ends)
         stick, sigma = False, 1.0
     t, t0, tau0, work0 = 0.0, math.nan, math.nan, math.nan
-    segments, switches = [], []
+    segments, switches, idle = [], [], 0
     horizon = 1e3 * time_scale
     while True:
         events = [compression_end, separation]
@@ -299,9 +299,15 @@ def integrate_tangential(
             tau0, work0 = float(y0[4]), float(y0[6])
         if sol.t[-1] > t:
             segments.append((t, float(sol.t[-1]), sol.sol, stick, sigma))
+            idle = 0
+        else:  # a switch at the very start: neither stick nor slip can go on (tangency)
+            idle += 1
         t, y = float(sol.t[-1]), sol.y[:, -1].copy()
         if sol.t_events[1].size:
             break
+        if idle > 4:
+            raise RuntimeError(f"stick and slip both end at once at t = {t:g} s (a tangency "
+                               "the event rules cannot resolve); try another rtol")  # fmt: skip
         if len(segments) > MAX_SEGMENTS:
             raise RuntimeError(f"more than {MAX_SEGMENTS} stick/slip switches in one impact")
         switches.append(t)
