@@ -10,7 +10,7 @@ import numpy as np
 
 from .. import core
 from .._validation import as_real_array, broadcast, check, validated, whole
-from . import result
+from . import _impact_fused, result
 from ._hooks import tangential_law
 from .body import Body
 from .result import Result, freeze, plain_repr
@@ -337,17 +337,13 @@ def solve(
         validated(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
     kappa_ = _restitution(kappa, vy_)
+    parts = {k: np.asarray(getattr(body, k)) for k in ("mass", "radius", "gyration", "zeta")}
     vx_, vy_, om_, mu_, kappa_, m, r, g, zeta = broadcast(
-        vx=vx_,
-        vy=vy_,
-        omega=om_,
-        mu=mu_,
-        kappa=kappa_,
-        mass=np.asarray(body.mass),
-        radius=np.asarray(body.radius),
-        gyration=np.asarray(body.gyration),
-        zeta=np.asarray(body.zeta),
+        vx=vx_, vy=vy_, omega=om_, mu=mu_, kappa=kappa_, **parts
     )
+    many = _impact_fused.fused_fields(State, Outcome, vx_, vy_, om_, mu_, kappa_, m, r, g, zeta)
+    if many is not None:  # arrays: every field in one pass over memory (Numba), same numbers
+        return Impact(body=body, **many)
     inertia = m * g**2
     inc = (vx_, vy_, om_, m, r, zeta, mu_, kappa_)
 
