@@ -209,6 +209,8 @@ class ArrowRows:
                 column = results[name]
                 if column.dtype.kind == "f":
                     arrays.append(pa.array(column, field.type, mask=None if good.all() else ~good))
+                elif column.dtype.kind in "Ub":  # every row solved: NumPy str or bool
+                    arrays.append(pa.array(column, field.type))
                 else:
                     arrays.append(pa.array(column.tolist(), field.type))
             elif name == "error":
@@ -218,6 +220,8 @@ class ArrowRows:
             elif field.type == pa.float64():  # parsed numbers; null where empty or unreadable
                 v = values[name]
                 arrays.append(pa.array(v, mask=chunk.empty[name] | np.isnan(v)))
+            elif chunk.text is not None:  # CSV read by Arrow: its text, as it is
+                arrays.append(chunk.text[name])
             else:
                 arrays.append(pa.array(chunk.columns[name], pa.string()))
         self.out.write(pa.Table.from_arrays(arrays, schema=schema))

@@ -53,6 +53,12 @@ class Chunk:
     lines: np.ndarray | None  #: CSV line number of each row (None for Parquet)
     messages: np.ndarray  #: problems found while reading ('' where none)
     arrow: dict[str, Any] | None = None  #: Parquet input: the typed columns, passed through
+    #: CSV input read by pyarrow (:mod:`spinimpact.io._arrow_csv`): the stripped text
+    #: cells as Arrow string arrays, passed through to Arrow output
+    text: dict[str, Any] | None = None
+    #: With ``text``: ``numbers(name) -> (values, rest)``, the plain numbers read by Arrow
+    #: (NaN elsewhere) and the indices of non-empty cells left to :func:`chunk_numbers`
+    numbers: Callable[[str], tuple[np.ndarray, np.ndarray]] | None = None
 
     def where(self, i: int, column: str | None = None) -> str:
         """``"row 5 (line 6), column vy"``: where row ``i`` of the chunk is in the file."""
@@ -289,8 +295,11 @@ def chunk_numbers(
     numpy.ndarray
         The numbers (NaN where a cell is empty without default or unreadable).
     """
-    cells, empty = chunk.columns[name], chunk.empty[name]
-    if cells.dtype.kind in "iuf":
+    empty = chunk.empty[name]
+    cells = None if chunk.numbers is not None else chunk.columns[name]  # text read by Arrow
+    if cells is None:
+        values = _plain_numbers(chunk, name, cells, empty, note)
+    elif cells.dtype.kind in "iuf":
         values = np.where(empty, np.nan, cells.astype(np.float64))
     elif cells.dtype.kind == "b":
         for i in np.flatnonzero(~empty):
@@ -323,13 +332,20 @@ _SHOWN = 40  # characters of a bad cell quoted in a message
 def _plain_numbers(
     chunk: Chunk,
     name: str,
-    cells: np.ndarray,
+    cells: np.ndarray | None,
     empty: np.ndarray,
     note: Callable[[int, str], None],
 ) -> np.ndarray:
-    """Text cells as float64, NaN where empty; each cell that is not a plain number noted."""
-    values = np.full(cells.shape, np.nan)
+    """Text cells as float64, NaN where empty; each cell that is not a plain number noted.
+
+    ``cells`` is ``None`` for text read by Arrow (``chunk.numbers``): only the cells it
+    did not read as numbers are then taken from ``chunk.columns``.
+    """
+    values = np.full(empty.shape, np.nan)
     given = np.flatnonzero(~empty)
+    if cells is None and chunk.numbers is not None:
+        values, given = chunk.numbers(name)
+        cells = chunk.columns[name] if given.size else np.empty(0, dtype=object)
     text = [(c if isinstance(c, str) else str(c)).strip() for c in cells[given].tolist()]
     if all(map(_PLAIN.fullmatch, text)):
         values[given] = np.fromiter(map(float, text), np.float64, count=len(text))

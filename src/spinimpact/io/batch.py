@@ -30,6 +30,7 @@ import numpy as np
 from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import Impact, solve
+from ._arrow_csv import csv_chunks as arrow_csv_chunks
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
 from ._stop import check as stop_check
 from ._tables import (
@@ -160,8 +161,15 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
         for i in np.flatnonzero(given & own_gyration):
             note(i, f"{chunk.where(i, 'body')}: give either body or gyration, not both")
         values["gyration"][given & ~own_gyration] = np.nan  # the row's preset wins
+    # every row the default preset (no body or gyration column): one preset body
+    one_preset = (
+        defaults.get("body") in PRESETS
+        and defaults.get("gyration") is None
+        and not ({"body", "gyration"} & set(chunk.columns))
+    )
     custom = ~np.isnan(values["gyration"])
-    for i in np.flatnonzero(~custom & ~np.isin(preset, list(PRESETS))):
+    unknown = np.zeros(n, bool) if one_preset else ~custom & ~np.isin(preset, list(PRESETS))
+    for i in np.flatnonzero(unknown):
         what = repr(str(preset[i])) if preset[i] else "nothing (no body and no gyration)"
         note(i, f"{chunk.where(i, 'body')}: must be one of {', '.join(PRESETS)}; got {what}")
     for i, message in sorted(found, key=lambda item: item[0]):
@@ -172,19 +180,24 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
     if good.any():
         take = {k: v[good] for k, v in values.items()}
         with np.errstate(over="raise", invalid="raise", divide="raise"):
-            body = Body.from_columns(
-                mass=take["mass"],
-                radius=take["radius"],
-                preset=np.where(custom[good], "", preset[good]),
-                gyration=take["gyration"],
-            )
+            if one_preset:  # the same numbers as from_columns, without a name per row
+                body = Body.preset(defaults["body"], mass=take["mass"], radius=take["radius"])
+            else:
+                body = Body.from_columns(
+                    mass=take["mass"],
+                    radius=take["radius"],
+                    preset=np.where(custom[good], "", preset[good]),
+                    gyration=take["gyration"],
+                )
             imp = solve(
                 body, take["vx"], take["vy"], take["omega"], mu=take["mu"], kappa=take["kappa"]
             )
         solved = imp.columns()
     results = {}
     for name, kind in column_kinds().items():
-        if kind == "float":
+        if good.all():  # every row solved: the arrays as they are (float, str or bool)
+            column = np.asarray(solved[name])
+        elif kind == "float":
             column = np.full(n, np.nan)
             if good.any():
                 column[good] = solved[name]
@@ -348,7 +361,7 @@ def run_batch(
         if progress is not None:
             progress(done, total)
 
-    read = parquet_chunks if fmt_in == "parquet" else csv_chunks
+    read = parquet_chunks if fmt_in == "parquet" else arrow_csv_chunks  # pyarrow's, or Python's
     chunks = read(source, int(chunk_size), skip, advance)
     header = next(chunks)
     kind = body_kind(header)
