@@ -111,3 +111,21 @@ def test_a_compliance_law_from_the_command_line(cli):
     assert status == 0 and "Walton(beta0=0.4)" in out
     status, _, err = cli("flight", "--tangential", "walton")
     assert status == 2 and "needs --beta0" in err
+
+
+def test_a_wall_from_the_command_line(cli, tmp_path):
+    from spinimpact.model.presets import Wall
+
+    png = tmp_path / "wall.png"
+    args = ("flight", "--speed", "20", "--angle", "10", "--max-bounces", "3",
+            "--wall-distance", "10", "--wall-direction", "5", "--wall-kappa", "0.6")  # fmt: skip
+    status, out, _ = cli(*args, "--json")
+    want = flight("tennis", "hard", speed=20.0, angle=10.0, max_bounces=3,
+                  wall=Wall(10.0, 5.0, kappa=0.6))  # fmt: skip
+    got = json.loads(out)
+    assert status == 0 and got["bounces"]["surface"] == want.bounces.surface.tolist()
+    assert got["wall"]["distance"] == 10.0 and got["bounces"]["surface"][0] == "wall"
+    status, out, _ = cli(*args, "--plot", png)
+    assert status == 0 and " 1w " in out and png.exists()
+    status, _, err = cli("flight", "--wall-kappa", "0.5")
+    assert status == 2 and "--wall-kappa needs --wall-distance" in err

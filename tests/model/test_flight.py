@@ -237,3 +237,35 @@ def test_bounces_in_air_match_an_independent_integration_with_events():
         imp = solve_sphere(ball.body, y[3:6], y[6:9], mu=ground.mu, kappa=ground.kappa)
         y = np.concatenate([y[:3], imp.after.velocity, imp.after.spin])
         np.testing.assert_allclose(f.bounces.after.spin[k], y[6:9], rtol=1e-8, atol=1e-6)
+
+
+def test_a_wall_is_met_on_the_parabola_and_bounces_as_solve_sphere_on_it():
+    from spinimpact import Surface
+    from spinimpact.model.presets import Wall
+
+    ball = BALLS["tennis"]
+    wall = Wall(8.0, direction=20.0, mu=0.4, kappa=0.6)
+    kw = dict(speed=15.0, angle=15.0, direction=10.0, height=1.0, spin_rpm=800,
+              spin_axis=[0.5, 1.0, 0.0], max_bounces=3, wall=wall)  # fmt: skip
+    f = flight(ball, "hard", air_density=0.0, **kw)
+    assert list(f.bounces.surface) == ["wall", "ground", "ground"]
+    v0, _ = launch(15.0, 15.0, 10.0, 800, [0.5, 1.0, 0.0])
+    h = np.array([np.cos(np.radians(20.0)), 0.0, -np.sin(np.radians(20.0))])
+    t = (8.0 - ball.radius) / (v0 @ h)  # the gap closes linearly in a vacuum
+    assert f.bounces.time[0] == pytest.approx(t, rel=1e-13)
+    assert f.bounces.position.array[0] @ h == pytest.approx(8.0 - ball.radius, rel=1e-13)
+    b = f.bounces
+    imp = solve_sphere(ball.body, b.before.velocity[0], b.before.spin[0], mu=0.4, kappa=0.6,
+                       surface=Surface(normal=-h))  # fmt: skip
+    np.testing.assert_array_equal(b.after.velocity[0], imp.after.velocity)
+    np.testing.assert_array_equal(b.after.spin[0], imp.after.spin)
+    vb = b.before.velocity[0]  # the angle is measured from the wall's plane
+    assert b.angle_before[0] == pytest.approx(np.arcsin((vb @ h) / np.linalg.norm(vb)), rel=1e-12)
+    # in air, the wall is met where the integrator's own path meets it
+    a = flight(ball, "hard", **kw)
+    assert a.bounces.surface[0] == "wall"
+    assert a.bounces.position.array[0] @ h == pytest.approx(8.0 - ball.radius, rel=1e-14)
+    with pytest.raises(ValueError, match="in front of the wall"):
+        flight(ball, "hard", speed=5.0, angle=0.0, wall=Wall(0.01))
+    with pytest.raises(TypeError, match="wall must be"):
+        flight(ball, "hard", speed=5.0, angle=0.0, wall=3.0)

@@ -73,3 +73,17 @@ def test_animation_writes_a_gif_with_frames(tmp_path):
     with pytest.raises(ValueError, match="no recorded path"):
         animate_flight(flight("tennis", "hard", speed=5.0, angle=5.0, path=False),
                        tmp_path / "c.gif")  # fmt: skip
+
+
+def test_the_wall_is_drawn_where_it_stands():
+    from spinimpact.model.presets import Wall
+
+    f = flight("tennis", "hard", speed=20.0, angle=10.0, max_bounces=2,
+               wall=Wall(10.0, direction=15.0))  # fmt: skip
+    top = plot_flight(f).axes[1]
+    (line,) = [ln for ln in top.get_lines() if ln.get_label() == "wall"]
+    x, z = line.get_data()
+    d = np.radians(15.0)
+    np.testing.assert_allclose(x * np.cos(d) - z * np.sin(d), 10.0, rtol=1e-12)  # h . p = 10
+    bounces, _ = flight_tables(f)
+    assert bounces.rows[0][0] == "1w" and bounces.rows[1][0] == "2"

@@ -73,6 +73,20 @@ def _inputs(o: dict) -> dict[str, Any]:
     return out
 
 
+def _wall(o: dict) -> Any:
+    """The wall the ``--wall-*`` options describe, or ``None``."""
+    from ..model.presets import Wall
+
+    if o["wall_distance"] is None:
+        ctx = click.get_current_context()
+        names = ("wall_direction", "wall_mu", "wall_kappa")
+        typed = [n for n in names if ctx.get_parameter_source(n).name != "DEFAULT"]
+        if typed:
+            raise click.UsageError(f"--{typed[0].replace('_', '-')} needs --wall-distance")
+        return None
+    return Wall(o["wall_distance"], o["wall_direction"], mu=o["wall_mu"], kappa=o["wall_kappa"])
+
+
 def _print_one(f: Any) -> None:
     from rich.console import Console
 
@@ -186,6 +200,33 @@ def _print_many(f: Any) -> None:
 @click.option("--direction-sd", type=float, default=0.0, help="With --samples: sd, degrees.")
 @click.option("--spin-sd", type=float, default=0.0, help="With --samples: sd of the spin, rpm.")
 @click.option("--seed", type=int, default=0, show_default=True, help="With --samples.")
+@click.option(
+    "--wall-distance",
+    type=float,
+    default=None,
+    help="A vertical wall this far from the origin along --wall-direction, m.",
+)
+@click.option(
+    "--wall-direction",
+    type=float,
+    default=0.0,
+    show_default=True,
+    help="With --wall-distance: the wall faces back along this heading, degrees.",
+)
+@click.option(
+    "--wall-mu",
+    type=float,
+    default=0.5,
+    show_default=True,
+    help="With --wall-distance: the wall's friction (an assumption by default).",
+)
+@click.option(
+    "--wall-kappa",
+    type=float,
+    default=0.7,
+    show_default=True,
+    help="With --wall-distance: the wall's restitution (an assumption by default).",
+)
 @click.option("--json", "as_json", is_flag=True, help="Print every field as JSON (SI units).")
 @click.option("--plot", default=None, help="Write side and top views (.png, .svg, .pdf).")
 @click.option("--animate", default=None, help="Write an animation (.gif; .mp4 with ffmpeg).")
@@ -212,6 +253,7 @@ def flight_command(**o: Any) -> None:
     kw = dict(
         height=o["height"], spin_axis=_axis(o["spin_axis"]), air_density=o["air_density"],
         max_bounces=o["max_bounces"], t_stop=o["t_stop"], dt=o["dt"], tangential=law,
+        wall=_wall(o),
     )  # fmt: skip
     if o["samples"] is None:
         f = flight(o["ball"], ground, **inputs, **kw)

@@ -38,6 +38,7 @@ class Flights(NamedTuple):
     spin_after: Any  #: (n, B, 3), rad/s
     regime: Any  #: (n, B) codes into ``core.REGIMES`` (-1 past the last)
     grips: Any  #: (n, B) bool
+    surface: Any  #: (n, B): 0 the ground, 1 the wall (-1 past the last)
     next_apex_height: Any  #: top of the arc after each bounce, (n, B), m (NaN: none)
     apex_height: Any  #: top of the first arc, (n,), m
     apex_time: Any  #: (n,), s
@@ -52,6 +53,7 @@ class Flights(NamedTuple):
 def fly(
     position, velocity, spin, *, mass, radius, inertia, zeta, mu, kappa, rolling,
     aero: AeroConstants, max_bounces, t_stop, settle_speed, dt, record=False, rebound_slip=None,
+    wall=None,
 ) -> Flights:  # fmt: skip
     """Fly, bounce and roll ``n`` balls (module docstring).
 
@@ -78,6 +80,10 @@ def fly(
     rebound_slip : callable, optional
         A tangential compliance law for the bounces (:func:`~spinimpact.core.ground.
         ground_bounce`).
+    wall : tuple, optional
+        ``(n_w, C_w, mu_w, kappa_w)``: a vertical wall met where ``n_w . p = C_w`` (``n_w``
+        its unit normal towards the ball), with its own friction and restitution. Balls
+        bounce off it in flight (a rolling ball does not meet it).
     """
     p = np.array(position, dtype=float)
     v = np.array(velocity, dtype=float)
@@ -88,12 +94,18 @@ def fly(
     out = {k: vec.copy() for k in ("pos", "vb", "wb", "va", "wa")}
     b_time, nxt = np.full((n, nb), np.nan), np.full((n, nb), np.nan)
     regime, grips = np.full((n, nb), -1), np.zeros((n, nb), dtype=bool)
+    surface = np.full((n, nb), -1)
     count = np.zeros(n, dtype=int)
     stop = np.full(n, 1)
     apex_h, apex_t = np.full(n, np.nan), np.full(n, np.nan)
     path: list = []
     exact = aero.drag == 0 and aero.lift == 0 and aero.spin_decay == 0
-    ground = {"mass": mass, "radius": radius, "inertia": inertia, "zeta": zeta, "mu": mu}
+    ball = {"mass": mass, "radius": radius, "inertia": inertia, "zeta": zeta}
+    ground = {**ball, "mu": mu, "kappa": kappa}
+    plane, against = None, {}
+    if wall is not None:
+        plane = (wall[0], wall[1])
+        against = {**ball, "mu": wall[2], "kappa": wall[3], "normal": wall[0]}
 
     def settle(idx: np.ndarray) -> None:
         """Slide and roll the balls ``idx`` from where they are to rest or ``t_stop``."""
@@ -101,7 +113,7 @@ def fly(
             return
         roll, pieces = roll_to_rest(t[idx], p[idx], v[idx], w[idx], rolling=rolling,
                                     gravity=aero.gravity, t_stop=t_stop,
-                                    samples=51 if record else 0, **ground)  # fmt: skip
+                                    samples=51 if record else 0, mu=mu, **ball)  # fmt: skip
         t[idx], p[idx], v[idx], w[idx] = roll.time, roll.position, roll.velocity, roll.spin
         stop[idx] = np.where(roll.at_rest, 0, 1)
         path.extend((idx[i], ts, ps) for i, ts, ps in pieces)
@@ -115,11 +127,11 @@ def fly(
         if exact:
             seg = parabola_to_ground(t[active], p[active], v[active], w[active],
                                      gravity=aero.gravity, radius=radius, t_stop=t_stop,
-                                     record=record)  # fmt: skip
+                                     record=record, wall=plane)  # fmt: skip
         else:
             seg = integrate_to_ground(t[active], p[active], v[active], w[active], aero,
                                       radius=radius, t_stop=t_stop, dt=dt,
-                                      record=record)  # fmt: skip
+                                      record=record, wall=plane)  # fmt: skip
         path += [(active[i], ts, ps) for i, ts, ps in seg.path]
         if arc == 0:
             apex_h[active], apex_t[active] = seg.apex_height, seg.apex_time
@@ -130,18 +142,24 @@ def fly(
         k = count[hi]
         b_time[hi, k], out["pos"][hi, k] = t[hi], p[hi]
         out["vb"][hi, k], out["wb"][hi, k] = v[hi], w[hi]
-        b = ground_bounce(v[hi], w[hi], kappa=kappa, rebound_slip=rebound_slip, **ground)
-        v[hi], w[hi] = b.velocity, b.spin
-        out["va"][hi, k], out["wa"][hi, k] = b.velocity, b.spin
-        regime[hi, k], grips[hi, k] = b.regime, b.grips
+        on_wall = seg.surface[seg.hit] == 1
+        for sel, contact in ((~on_wall, ground), (on_wall, against)):
+            if sel.any():
+                j, kj = hi[sel], k[sel]
+                b = ground_bounce(v[j], w[j], rebound_slip=rebound_slip, **contact)
+                v[j], w[j] = b.velocity, b.spin
+                regime[j, kj], grips[j, kj] = b.regime, b.grips
+        out["va"][hi, k], out["wa"][hi, k] = v[hi], w[hi]
+        surface[hi, k] = np.where(on_wall, 1, 0)
         count[hi] += 1
         full = count[hi] >= nb
         stop[hi[full]] = 2
-        settle(hi[~full & (b.velocity[:, 1] < settle_speed)])
-        active = hi[~full & (b.velocity[:, 1] >= settle_speed)]
+        down = ~full & ~on_wall & (v[hi, 1] < settle_speed)  # only the ground keeps it down
+        settle(hi[down])
+        active = hi[~full & ~down]
         arc += 1
     return Flights(count, b_time, out["pos"], out["vb"], out["wb"], out["va"], out["wa"], regime,
-                   grips, nxt, apex_h, apex_t, t, p, v, w, stop, path)  # fmt: skip
+                   grips, surface, nxt, apex_h, apex_t, t, p, v, w, stop, path)  # fmt: skip
 
 
 def assemble_path(path: list, n: int):

@@ -15,6 +15,10 @@ ends: on the ground, or in the air at the stopping time):
   meets the ground, to rounding. The apex of the arc is the zero of the interpolant's
   derivative inside the step where ``v_y`` changes sign.
 
+An optional vertical wall is a second plane: the step's interpolant of each gap
+(``n . p - C``, for the ground ``y - R``) brackets its crossing, the earliest is polished
+(``d gap/ds = n . v``), and the segment says which was met.
+
 Loops run over time steps only; every step advances all the balls still in the air.
 """
 
@@ -36,7 +40,8 @@ class Segment(NamedTuple):
     position: Any  #: centre, (n, 3), m (``y = R`` exactly on the ground)
     velocity: Any  #: (n, 3), m/s
     spin: Any  #: (n, 3), rad/s
-    hit: Any  #: bool: reached the ground (otherwise the stopping time, in the air)
+    hit: Any  #: bool: reached the ground or the wall (otherwise the stopping time, in the air)
+    surface: Any  #: what it hit: 0 the ground, 1 the wall, -1 nothing
     apex_height: Any  #: height of the centre at the top of the arc, m (NaN: not reached)
     apex_time: Any  #: s
     path: list  #: ``[(index, times (m, k), positions (m, k, 3)), ...]`` when recorded
@@ -85,21 +90,33 @@ def _bisect(fun, n, iterations=60):
     return 0.5 * (lo + hi)
 
 
-def _event(p, v, w, p1, v1, h, c, radius, newton=4):
-    """Polish the ground crossings inside steps of size ``h``: returns the step size to the
-    crossing and the state there (``y = R`` set exactly)."""
-    y0, y1 = p[:, 1] - radius, p1[:, 1] - radius
-    m0, m1 = h * v[:, 1], h * v1[:, 1]
-    theta = _bisect(lambda th: _hermite(th, y0, y1, m0, m1), len(h))
+def _gap(p, normal, offset):
+    """Signed distance of the centre from where it touches a plane: ``n . p - C``."""
+    return np.einsum("ij,ij->i", p, normal) - offset
+
+
+def _crossing(p, v, p1, v1, h, normal, offset):
+    """Fraction of the step where the gap's cubic Hermite interpolant crosses zero."""
+    g0, g1 = _gap(p, normal, offset), _gap(p1, normal, offset)
+    m0, m1 = h * np.einsum("ij,ij->i", v, normal), h * np.einsum("ij,ij->i", v1, normal)
+    return _bisect(lambda th: _hermite(th, g0, g1, m0, m1), len(h))
+
+
+def _event(p, v, w, h, theta, c, normal, offset, newton=4):
+    """Polish the crossings of the planes ``n . p = C`` inside steps of size ``h`` from the
+    interpolant's ``theta``: returns the step size to the crossing and the state there (on
+    the plane to rounding; ``y = R`` exactly on the ground)."""
     s = theta * h
-    for _ in range(newton):  # Newton on the integrator's own solution: dy/ds = v_y
+    for _ in range(newton):  # Newton on the integrator's own solution: d gap/ds = n . v
         ps, vs, _ = rk4_step(p, v, w, s, c)
-        vy = vs[:, 1]
+        rate = np.einsum("ij,ij->i", vs, normal)
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(vy < 0, (ps[:, 1] - radius) / vy, 0.0)
+            step = np.where(rate < 0, _gap(ps, normal, offset) / rate, 0.0)
         s = np.clip(s - step, 0.0, h)
     ps, vs, ws = rk4_step(p, v, w, s, c)
-    ps[:, 1] = radius
+    ps = ps - _gap(ps, normal, offset)[:, None] * normal
+    ground = normal[:, 1] == 1.0
+    ps[ground, 1] = offset[ground]
     return s, ps, vs, ws
 
 
@@ -112,7 +129,7 @@ def _apex(p, v, p1, v1, h):
 
 
 def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, radius, t_stop,
-                        dt, record=False) -> Segment:  # fmt: skip
+                        dt, record=False, wall=None) -> Segment:  # fmt: skip
     """Integrate every ball from its own time until its centre comes down to ``y = R`` or
     the time reaches ``t_stop`` (module docstring).
 
@@ -131,10 +148,17 @@ def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, rad
         Step, s.
     record : bool
         Keep every step's position for pictures.
+    wall : tuple, optional
+        ``(n_w, C_w)``: a second plane, met where ``n_w . p = C_w`` (``n_w`` its unit
+        normal towards the ball, ``C_w = n_w . q + R`` for a point ``q`` of the wall).
     """
     t, p, v, w = (np.array(a, dtype=float) for a in (time, position, velocity, spin))
     n = len(t)
     hit = np.zeros(n, dtype=bool)
+    surface = np.full(n, -1)
+    planes = [(np.array([0.0, 1.0, 0.0]), float(radius))]
+    if wall is not None:
+        planes.append((np.asarray(wall[0], dtype=float), float(wall[1])))
     falling = v[:, 1] <= 0
     apex_h = np.where(falling, p[:, 1], np.nan)
     apex_t = np.where(falling, t, np.nan)
@@ -144,17 +168,34 @@ def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, rad
     while active.size:
         h = np.minimum(dt, t_stop - ta)
         p1, v1, w1 = rk4_step(pa, va, wa, h, c)
-        cross = p1[:, 1] < radius
+        gaps = [_gap(p1, np.broadcast_to(nv, p1.shape), off) for nv, off in planes]
+        cross = gaps[0] < 0
+        for gap in gaps[1:]:
+            cross = cross | (gap < 0)
         top = (va[:, 1] > 0) & (v1[:, 1] <= 0)
         if top.any():
             height, theta = _apex(pa[top], va[top], p1[top], v1[top], h[top])
             apex_h[active[top]], apex_t[active[top]] = height, ta[top] + theta * h[top]
         if cross.any():
-            s, pe, ve, we = _event(pa[cross], va[cross], wa[cross], p1[cross], v1[cross],
-                                   h[cross], c, radius)  # fmt: skip
-            p1[cross], v1[cross], w1[cross] = pe, ve, we
-            h[cross] = s
-            hit[active[cross]] = True
+            idx = np.flatnonzero(cross)
+            first = np.full(idx.size, np.inf)
+            which = np.zeros(idx.size, dtype=int)
+            for k, (nv, off) in enumerate(planes):  # the earliest crossing in the step
+                sel = gaps[k][idx] < 0
+                if sel.any():
+                    j = idx[sel]
+                    normal = np.broadcast_to(nv, (j.size, 3))
+                    th = _crossing(pa[j], va[j], p1[j], v1[j], h[j], normal, np.full(j.size, off))
+                    earlier = th < first[sel]
+                    first[sel] = np.where(earlier, th, first[sel])
+                    which[sel] = np.where(earlier, k, which[sel])
+            normal = np.stack([planes[k][0] for k in which]) if idx.size else np.zeros((0, 3))
+            offset = np.array([planes[k][1] for k in which])
+            s, pe, ve, we = _event(pa[idx], va[idx], wa[idx], h[idx], first, c, normal, offset)
+            p1[idx], v1[idx], w1[idx] = pe, ve, we
+            h[idx] = s
+            hit[active[idx]] = True
+            surface[active[idx]] = which
         t_new = np.where(h == t_stop - ta, t_stop, ta + h)
         if record:
             path.append((active, t_new[:, None], p1[:, None, :]))
@@ -167,14 +208,15 @@ def integrate_to_ground(time, position, velocity, spin, c: AeroConstants, *, rad
         v[active[done]], w[active[done]] = v1[done], w1[done]
         active = active[flying]
         ta, pa, va, wa = t_new[flying], p1[flying], v1[flying], w1[flying]
-    return Segment(t, p, v, w, hit, apex_h, apex_t, path)
+    return Segment(t, p, v, w, hit, surface, apex_h, apex_t, path)
 
 
 def parabola_to_ground(time, position, velocity, spin, *, gravity, radius, t_stop,
-                       record=False, samples=101) -> Segment:  # fmt: skip
+                       record=False, samples=101, wall=None) -> Segment:  # fmt: skip
     """The exact parabola to the ground (no air): parameters as :func:`integrate_to_ground`,
     with ``gravity`` (``g``, m/s^2); ``samples`` points of each arc are kept with
-    ``record``."""
+    ``record``. A ``wall`` must be vertical (``n_w . e_y = 0``): the gap to it is then linear
+    in time, ``n_w . p + (n_w . v) t - C_w``."""
     t, p, v, w = (np.array(a, dtype=float) for a in (time, position, velocity, spin))
     height = p[:, 1] - radius
     vy = v[:, 1]
@@ -182,11 +224,21 @@ def parabola_to_ground(time, position, velocity, spin, *, gravity, radius, t_sto
     with np.errstate(divide="ignore", invalid="ignore"):
         down = np.where(q - vy > 0, 2.0 * height / np.where(q - vy > 0, q - vy, 1.0), 0.0)
     flight = np.where(vy > 0, (vy + q) / gravity, down)
+    surface = np.zeros(len(t), dtype=int)
+    if wall is not None:
+        nw, cw = np.asarray(wall[0], dtype=float), float(wall[1])
+        closing = -(v @ nw)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            to_wall = np.where(closing > 0, (p @ nw - cw) / np.where(closing > 0, closing, 1.0),
+                               np.inf)  # fmt: skip
+        first = to_wall < flight
+        flight, surface = np.where(first, to_wall, flight), np.where(first, 1, 0)
     hit = t + flight <= t_stop
+    surface = np.where(hit, surface, -1)
     span = np.where(hit, flight, np.maximum(t_stop - t, 0.0))
     g = np.array([0.0, -gravity, 0.0])
     end = p + v * span[:, None] + 0.5 * g * (span * span)[:, None]
-    end[hit, 1] = radius
+    end[surface == 0, 1] = radius
     rising = vy > 0
     top_t = np.where(rising, t + vy / gravity, t)
     reached = top_t <= t + span
@@ -201,4 +253,4 @@ def parabola_to_ground(time, position, velocity, spin, *, gravity, radius, t_sto
         pts[:, -1] = end
         path.append((np.arange(len(t)), t[:, None] + s, pts))
     return Segment(np.where(hit, t + flight, np.maximum(t, t_stop)), end, v + g * span[:, None],
-                   w, hit, apex_h, apex_t, path)  # fmt: skip
+                   w, hit, surface, apex_h, apex_t, path)  # fmt: skip

@@ -49,7 +49,7 @@ class Roll(NamedTuple):
 
 
 def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
-                  rebound_slip=None) -> GroundBounce:  # fmt: skip
+                  rebound_slip=None, normal=None) -> GroundBounce:  # fmt: skip
     """The exact bounce of balls on the ground: :func:`spinimpact.solve_sphere`'s kernels.
 
     Parameters
@@ -66,8 +66,10 @@ def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
         along the slip before, as :func:`spinimpact.solve_sphere` with ``tangential=`` uses
         it. The regime codes are then :data:`spinimpact.core.compliance.COMPLIANT_REGIMES`'s
         and ``grips`` says the contact stuck.
+    normal : array_like, shape (3,), optional
+        The plane's unit normal towards the ball (default ``e_y``: the ground; a wall).
     """
-    n = np.broadcast_to(UP, np.shape(velocity))
+    n = np.broadcast_to(UP if normal is None else np.asarray(normal, float), np.shape(velocity))
     c = sphere_contact(velocity, spin, n, radius)
     if rebound_slip is None:
         r = sphere_rebound(c, n, mass, zeta, mu, kappa)

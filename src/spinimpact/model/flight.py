@@ -30,7 +30,7 @@ from ..core.bounces import STOPS, assemble_path, fly
 from ..core.compliance import COMPLIANT_REGIMES
 from ._hooks import tangential_law
 from .flight_result import Bounces, Flight
-from .presets import Ball, Ground
+from .presets import Ball, Ground, Wall
 from .presets import ball as as_ball
 from .presets import ground as as_ground
 from .result import freeze
@@ -111,7 +111,7 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
            max_bounces: int = 30, t_stop: float = 60.0, settle_speed: float = 0.05,
            dt: float = 5e-3, chunk: int = 4096, path: bool | None = None,
            progress: Callable[[int, int], None] | None = None,
-           tangential: Any = None) -> Flight:  # fmt: skip
+           tangential: Any = None, wall: Wall | None = None) -> Flight:  # fmt: skip
     """Fly a spinning ball, bounce it exactly on the ground, and roll it to rest.
 
     Parameters
@@ -152,6 +152,10 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         A tangential compliance law for every bounce, as in :func:`~spinimpact.solve_sphere`
         (then ``regime`` takes the compliant regimes' names and ``grips`` says the contact
         stuck during the impact).
+    wall : Wall, optional
+        A vertical wall across the ball's way (:class:`~spinimpact.model.presets.Wall`), with
+        its own ``mu`` and ``kappa``: the ball bounces off it in flight (``bounces.surface``
+        is ``"wall"``); a rolling ball does not meet it.
 
     Returns
     -------
@@ -193,6 +197,14 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         p = vector3("position", position)
     rule = f">= the ball's radius {radius:g} m (the ball must start on or above the ground)"
     check("the launch height of the centre", p[..., 1], lambda y: y >= radius, rule)
+    plane = None
+    if wall is not None:
+        if not isinstance(wall, Wall):
+            raise TypeError(f"wall must be a spinimpact Wall, got {wall!r}")
+        plane = (wall.normal, radius - wall.distance, wall.mu, wall.kappa)
+        gap = p @ wall.normal - plane[1]
+        check("the launch point's distance from the wall less the ball's radius", gap,
+              lambda x: x >= 0, ">= 0 (the ball must start in front of the wall)")  # fmt: skip
     shape = np.broadcast_shapes(v.shape[:-1], w0.shape[:-1], p.shape[:-1])
     v, w0, p = (np.broadcast_to(a, (*shape, 3)).reshape(-1, 3) for a in (v, w0, p))
     density = setting("air_density", air_density, low=0.0, closed=True)
@@ -217,17 +229,18 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         run = fly(p[sl], v[sl], w0[sl], mass=ball_.mass, radius=radius, inertia=body.inertia,
                   zeta=body.zeta, mu=ground_.mu, kappa=ground_.kappa, rolling=ground_.rolling,
                   aero=aero, max_bounces=nb, t_stop=t_stop, settle_speed=settle, dt=dt,
-                  record=record, rebound_slip=slip_law)  # fmt: skip
+                  record=record, rebound_slip=slip_law, wall=plane)  # fmt: skip
         used = max(1, int(run.bounces.max(initial=0)))
         trimmed = run._replace(**{k: getattr(run, k)[:, :used] for k in _PER_BOUNCE})
         parts.append((trimmed, assemble_path(run.path, sl.stop - sl.start) if record else None))
         if progress is not None:
             progress(sl.stop, n)
-    return _package(ball_, ground_, law, p, v, w0, parts, shape, record)
+    return _package(ball_, ground_, law, wall, p, v, w0, parts, shape, record)
 
 
 _PER_BOUNCE = ("bounce_time", "bounce_position", "velocity_before", "spin_before",
-               "velocity_after", "spin_after", "regime", "grips", "next_apex_height")  # fmt: skip
+               "velocity_after", "spin_after", "regime", "grips", "surface",
+               "next_apex_height")  # fmt: skip
 
 
 def _pad(arrays: list[np.ndarray], fill: Any) -> np.ndarray:
@@ -240,13 +253,15 @@ def _pad(arrays: list[np.ndarray], fill: Any) -> np.ndarray:
     return np.concatenate(out)
 
 
-def _angle(vel: np.ndarray, sign: float) -> np.ndarray:
-    """Angle of the velocity below (``sign = -1``) or above (``+1``) the ground, rad."""
-    along = np.sqrt(vel[..., 0] ** 2 + vel[..., 2] ** 2)
-    return np.arctan2(sign * vel[..., 1], along)
+def _angle(vel: np.ndarray, normal: np.ndarray, sign: float) -> np.ndarray:
+    """Angle of the velocity towards (``sign = -1``) or away from (``+1``) the surface of
+    unit ``normal``, rad (for the ground: below or above it)."""
+    vn = np.sum(vel * normal, axis=-1)
+    along = vel - vn[..., None] * normal
+    return np.arctan2(sign * vn, np.sqrt(np.sum(along * along, axis=-1)))
 
 
-def _package(ball_, ground_, law, p, v, w0, parts, shape, record) -> Flight:
+def _package(ball_, ground_, law, wall, p, v, w0, parts, shape, record) -> Flight:
     runs = [r for r, _ in parts]
 
     def cat(name: str) -> np.ndarray:
@@ -262,6 +277,9 @@ def _package(ball_, ground_, law, p, v, w0, parts, shape, record) -> Flight:
     vb, va = per_bounce("velocity_before", np.nan), per_bounce("velocity_after", np.nan)
     code = per_bounce("regime", -1)
     names = np.asarray((*(impulse.REGIMES if law is None else COMPLIANT_REGIMES), ""))
+    where = per_bounce("surface", -1)
+    normal = np.where((where == 1)[..., None], np.zeros(3) if wall is None else wall.normal,
+                      np.array([0.0, 1.0, 0.0]))  # fmt: skip
     bounces = Bounces(
         time=freeze(per_bounce("bounce_time", np.nan)),
         position=_vector(per_bounce("bounce_position", np.nan)),
@@ -269,8 +287,9 @@ def _package(ball_, ground_, law, p, v, w0, parts, shape, record) -> Flight:
         after=_state(va, per_bounce("spin_after", np.nan)),
         speed_before=freeze(np.sqrt(np.sum(vb * vb, -1))),
         speed_after=freeze(np.sqrt(np.sum(va * va, -1))),
-        angle_before=freeze(_angle(vb, -1.0)), angle_after=freeze(_angle(va, 1.0)),
+        angle_before=freeze(_angle(vb, normal, -1.0)), angle_after=freeze(_angle(va, normal, 1.0)),
         regime=freeze(names[code]), grips=freeze(per_bounce("grips", False)),
+        surface=freeze(np.asarray(["ground", "wall", ""])[where]),
         next_apex_height=freeze(per_bounce("next_apex_height", np.nan)),
     )  # fmt: skip
     if record:
@@ -280,7 +299,7 @@ def _package(ball_, ground_, law, p, v, w0, parts, shape, record) -> Flight:
         path_t, path_p = np.zeros((len(p), 0)), np.zeros((len(p), 0, 3))
     first = per_bounce("bounce_time", np.nan)[..., 0]
     return Flight(
-        ball=ball_, ground=ground_, tangential=law, launch_position=_vector(one(p)),
+        ball=ball_, ground=ground_, tangential=law, wall=wall, launch_position=_vector(one(p)),
         launch=_state(one(v), one(w0)),
         bounce_count=freeze(one(cat("bounces"))), bounces=bounces,
         apex_height=freeze(one(cat("apex_height"))), apex_time=freeze(one(cat("apex_time"))),

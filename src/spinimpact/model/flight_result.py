@@ -34,11 +34,13 @@ class Bounces(Result):
         Velocity (m/s) and spin (rad/s) just before and just after.
     speed_before, speed_after : m/s
     angle_before, angle_after : rad
-        Below the ground before, above it after.
+        Towards the surface before, away from it after (below and above the ground).
     regime : str
         The impact's regime (:func:`~spinimpact.solve`'s names).
     grips : bool
         The ball leaves without slip (the slip stopped during the impact); otherwise it skids.
+    surface : str
+        What it hit: ``ground`` or ``wall``.
     next_apex_height : m
         Top of the centre's arc after the bounce (NaN when there is none).
     """
@@ -53,6 +55,7 @@ class Bounces(Result):
     angle_after: Array
     regime: Array
     grips: Array
+    surface: Array
     next_apex_height: Array
 
     _shape_field = "time"
@@ -67,6 +70,8 @@ class Flight(Result):
     ball, ground : Ball, Ground
     tangential : Walton, Stronge or None
         The tangential compliance law of the bounces (``None``: the rigid law).
+    wall : Wall or None
+        The wall the ball may bounce off.
     launch_position : Vector
         m.
     launch : State3
@@ -93,6 +98,7 @@ class Flight(Result):
     ball: Ball
     ground: Ground
     tangential: Any
+    wall: Any
     launch_position: Vector
     launch: State3
     bounce_count: Array
@@ -157,6 +163,7 @@ class Flight(Result):
                 "spin_before_rpm": float(np.linalg.norm(wb) * _RPM),
                 "spin_after_rpm": float(np.linalg.norm(wa) * _RPM),
                 "regime": str(b.regime[k]), "grips": bool(b.grips[k]),
+                "surface": str(b.surface[k]),
                 "next_apex_m": float(b.next_apex_height[k]),
             })  # fmt: skip
         return rows
@@ -175,6 +182,7 @@ class Flight(Result):
                 f"{r['angle_before_deg']:7.1f} {r['angle_after_deg']:7.1f} "
                 f"{r['spin_before_rpm']:7.0f} {r['spin_after_rpm']:7.0f}  "
                 f"{'grips' if r['grips'] else 'skids'}"
+                f"{' (wall)' if r['surface'] == 'wall' else ''}"
             )
         fp = self.final_position
         lines.append(

@@ -28,7 +28,8 @@ import numpy as np
 from .._validation import check, scalar
 from .body import Body
 
-__all__ = ["Ball", "Ground", "BALLS", "GROUNDS", "thick_shell_gyration", "ball", "ground"]
+__all__ = ["Ball", "Ground", "Wall", "BALLS", "GROUNDS", "thick_shell_gyration", "ball",
+           "ground"]  # fmt: skip
 
 
 def thick_shell_gyration(radius: float, wall: float) -> float:
@@ -119,6 +120,36 @@ class Ground:
     def replace(self, **changes: object) -> Ground:
         """A copy with some numbers changed."""
         return replace(self, **changes)  # type: ignore[arg-type]
+
+    def to_dict(self) -> dict[str, object]:
+        return {k: getattr(self, k) for k in self.__dataclass_fields__}
+
+
+@dataclass(frozen=True, eq=False)
+class Wall:
+    """A vertical wall across the ball's way: the plane ``h . p = distance`` (m), ``h`` the
+    horizontal heading ``direction`` (degrees, counter-clockwise seen from above, 0: ``+x``),
+    facing the launch point, with its own ``mu`` and ``kappa``."""
+
+    distance: float
+    direction: float = 0.0
+    mu: float = 0.5
+    kappa: float = 0.7
+    name: str = "wall"
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str):
+            raise TypeError(f"name must be a str, got {self.name!r}")
+        object.__setattr__(self, "distance", scalar("distance", self.distance))
+        object.__setattr__(self, "direction", scalar("direction", self.direction))
+        object.__setattr__(self, "mu", scalar("mu", self.mu))
+        object.__setattr__(self, "kappa", scalar("kappa", self.kappa))
+
+    @property
+    def normal(self) -> np.ndarray:
+        """Unit normal of the wall towards the launch point, ``-h``."""
+        d = math.radians(self.direction)
+        return np.array([-math.cos(d), 0.0, math.sin(d)])
 
     def to_dict(self) -> dict[str, object]:
         return {k: getattr(self, k) for k in self.__dataclass_fields__}

@@ -41,7 +41,8 @@ def flight_tables(flight: Flight) -> tuple[Table, Table]:
     rows = []
     for r in flight.bounce_rows():
         rows.append((
-            str(r["bounce"]), f"{r['time_s']:.3f}", f"{r['x_m']:.2f}", f"{r['z_m']:.2f}",
+            f"{r['bounce']}{'w' if r['surface'] == 'wall' else ''}", f"{r['time_s']:.3f}",
+            f"{r['x_m']:.2f}", f"{r['z_m']:.2f}",
             f"{r['speed_before_m_s']:.1f} / {r['speed_after_m_s']:.1f}",
             f"{r['angle_before_deg']:.1f} / {r['angle_after_deg']:.1f}",
             f"{r['spin_before_rpm']:.0f} / {r['spin_after_rpm']:.0f}",
@@ -50,7 +51,8 @@ def flight_tables(flight: Flight) -> tuple[Table, Table]:
     bounces = Table(
         "bounces", f"Bounces: {flight.ball.name} ball on {flight.ground.name} (in / out)",
         ("#", "t (s)", "x (m)", "z (m)", "speed (m/s)", "angle (deg)", "spin (rpm)", "contact"),
-        tuple(rows), note="x, z: the centre at the impact; angles below / above the ground",
+        tuple(rows),
+        note="x, z: the centre at impact; angles towards / away from the surface; w: the wall",
     )  # fmt: skip
     fp = flight.final_position
     summary = Table("summary", "Flight", ("quantity", "value"), (
@@ -103,6 +105,8 @@ def plot_flight(flight: Flight) -> Figure:
     if rest.any():
         top.scatter(fx[rest], fz[rest], marker="x", s=30, color="k", zorder=3, label="at rest")
     side.axhline(0.0, color="0.4", lw=0.8)
+    if flight.wall is not None:  # the wall seen from above: the line h . p = distance
+        _wall_line(top, flight.wall, np.concatenate([pts[..., 2].ravel(), bz, [0.0]]))
     side.set_ylabel("height of the centre $y$ (m)")
     top.set_ylabel("$z$ (m)")
     top.set_xlabel("distance $x$ (m)")
@@ -114,6 +118,18 @@ def plot_flight(flight: Flight) -> Figure:
     what = f"{n} {flight.ball.name} balls" if many else f"{flight.ball.name} ball"
     fig.suptitle(f"{what} on {flight.ground.name}")
     return fig
+
+
+def _wall_line(ax, wall, zs: np.ndarray) -> None:
+    """Draw the wall in the top view ``(x, z)`` across the range of ``zs``."""
+    d = math.radians(wall.direction)
+    heading = np.array([math.cos(d), -math.sin(d)])  # (x, z) of h
+    along = np.array([-heading[1], heading[0]])
+    zs = zs[np.isfinite(zs)]
+    half = max(1.0, float(np.max(np.abs(zs))) * 1.2) if zs.size else 1.0
+    centre = wall.distance * heading
+    ends = np.array([centre - half * along, centre + half * along])
+    ax.plot(ends[:, 0], ends[:, 1], color="0.3", lw=2.5, label="wall")
 
 
 def animate_flight(flight: Flight, target: str | Path, *, format: str | None = None,
