@@ -144,3 +144,45 @@ def test_a_compliance_model_and_the_goodness_of_fit(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "walton" in out and "beta0" in out
     assert "reduced chi2" in out and "p = " in out and "does not explain" not in out
+
+
+def test_parameters_the_data_do_not_separate_are_named(tmp_path, capsys):
+    """Without measured vy+, sliding bounces give only mu (1 + kappa): mu and kappa are
+    not determined apart, and the output says so."""
+    rng = np.random.default_rng(3)
+    vy = -rng.uniform(2, 6, 20)
+    vx = rng.uniform(2.5, 4.0, 20) * -vy  # all slide
+    after = solve(BALL, vx, vy, 0.0, mu=0.35, kappa=0.75).after
+    a_vx = (after.vx + rng.normal(0, 0.05, 20)).tolist()
+    a_om = (after.omega + rng.normal(0, 3, 20)).tolist()
+    rows = zip(vx.tolist(), vy.tolist(), a_vx, a_om, strict=True)
+    lines = ["vx,vy,omega,after_vx,after_omega"] + [
+        f"{a!r},{b!r},0,{c!r},{d!r}" for a, b, c, d in rows
+    ]
+    src = tmp_path / "slide.csv"
+    src.write_text("\n".join(lines) + "\n")
+    main(["fit", str(src), "--radius", "0.033"])
+    out = capsys.readouterr().out
+    assert "not determined locally by these data: mu, kappa" in out
+
+
+def test_strong_correlations_are_named(tmp_path, capsys):
+    """vy+ measured on three sliding bounces only: kappa is determined, but barely apart
+    from mu (r = -0.93), and the output names the pair."""
+    rng = np.random.default_rng(3)
+    vy = -rng.uniform(2, 6, 20)
+    vx = rng.uniform(2.5, 4.0, 20) * -vy
+    after = solve(BALL, vx, vy, 0.0, mu=0.35, kappa=0.75).after
+    a_vx = (after.vx + rng.normal(0, 0.05, 20)).tolist()
+    a_vy = [
+        repr(v) if i < 3 else ""
+        for i, v in enumerate((after.vy + rng.normal(0, 0.05, 20)).tolist())
+    ]
+    a_om = (after.omega + rng.normal(0, 3, 20)).tolist()
+    rows = zip(vx.tolist(), vy.tolist(), a_vx, a_vy, a_om, strict=True)
+    lines = [HEADER] + [f"{a!r},{b!r},0,{c!r},{d},{e!r}" for a, b, c, d, e in rows]
+    src = tmp_path / "three.csv"
+    src.write_text("\n".join(lines) + "\n")
+    main(["fit", str(src), "--radius", "0.033"])
+    out = capsys.readouterr().out
+    assert "strongly correlated: mu and kappa (r = -0.9" in out

@@ -151,6 +151,17 @@ def _print(res: Any) -> None:
     console.print(Text(f"AIC = {res.aic:.5g}, BIC = {res.bic:.5g}"))
     if res.n_sliding or res.n_sticking:
         console.print(Text(f"friction: {res.identifiability}"))
+    names = res.names
+    loose = [n for n, e in zip(names, res.standard_error, strict=True) if not np.isfinite(e)]
+    if loose:
+        why = "infinite standard error; the intervals show what the data allow"
+        console.print(Text(f"not determined locally by these data: {', '.join(loose)} ({why})"))
+    for i in range(len(names)):
+        for j in range(i):
+            r = float(res.correlation[i, j])
+            if abs(r) > 0.9:  # the data constrain a combination more than either alone
+                console.print(Text(f"strongly correlated: {names[j]} and {names[i]} "
+                                   f"(r = {r:.3f})"))  # fmt: skip
 
 
 @click.command("fit")
