@@ -260,6 +260,10 @@ def main() -> None:
         f"{t_fit:.2f} s, {t_fit / t_solve:,.0f} times one vectorized solve() of them "
         f"({t_solve * 1e3:.1f} ms), both in this run"
     )
+    from benchmarks.flight_bench import flight_benchmark
+    from benchmarks.flight_bench import line as flight_line
+
+    console.print(flight_line(10_000, *flight_benchmark()))  # serves/s against one at a time
     late = late_phase_rows()
     if late:
         phases = Table(
