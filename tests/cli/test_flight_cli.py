@@ -81,6 +81,7 @@ def test_many_balls_print_the_spread(cli):
         (("--animate", "x.gif", "--samples", "3"), "--animate moves one ball"),
         (("--kappa", "2"), "kappa must be in [0, 1]"),
         (("--dt", "0"), "dt must be"),
+        (("--speed-sd", "2"), "--speed-sd goes with --samples N"),
     ],
 )  # fmt: skip
 def test_bad_input_is_one_line_and_exit_2(cli, args, message):

@@ -63,6 +63,11 @@ def _inputs(o: dict) -> dict[str, Any]:
     given = {"speed": speed, "angle": o["angle"], "direction": o["direction"],
              "spin_rpm": o["spin_rpm"]}  # fmt: skip
     if o["samples"] is None:
+        ctx = click.get_current_context()
+        names = ("speed_sd", "angle_sd", "direction_sd", "spin_sd", "seed")
+        typed = [n for n in names if ctx.get_parameter_source(n).name != "DEFAULT"]
+        if typed:
+            raise click.UsageError(f"--{typed[0].replace('_', '-')} goes with --samples N")
         return given
     rng = np.random.default_rng(o["seed"])
     n = o["samples"]
