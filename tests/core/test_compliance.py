@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from spinimpact.core import compliance as cc
 from spinimpact.core import impulse
@@ -216,3 +218,31 @@ def test_stronge_depends_on_the_normalized_angle_and_frequency_ratio_only():
     c = cc.stronge_restitution(slip, vy, zeta / 2.0, 2.0 * mu, kappa, 2.0 * ratio)
     np.testing.assert_allclose(c.slip_after, a.slip_after, rtol=1e-9,
                                atol=1e-11 * np.abs(vy).max())  # fmt: skip
+
+
+# -- properties (hypothesis) ---------------------------------------------------------------
+
+finite = dict(allow_nan=False, allow_infinity=False)
+
+
+@given(
+    st.floats(-20, 20, **finite),
+    st.floats(0.05, 10, **finite),
+    st.floats(1.01, 8, **finite),
+    st.floats(0, 1.5, **finite),
+    st.floats(0, 1, **finite),
+    st.floats(0.05, 50, **finite),
+    st.floats(-1, 1, **finite),
+)
+@settings(max_examples=300, deadline=None)
+def test_energy_never_increases_and_the_laws_stay_in_their_bounds(
+    slip, speed, zeta, mu, kappa, ratio, beta0
+):
+    vy = -speed
+    for after in (
+        cc.stronge_restitution(slip, vy, zeta, mu, kappa, ratio).slip_after,
+        cc.walton_slip(slip, vy, zeta, mu, kappa, beta0)[0],
+    ):
+        assert abs(after) <= abs(slip) * (1 + 1e-12) + 1e-300  # |beta| <= 1: energy
+        # the friction impulse never exceeds Coulomb's over the whole impact
+        assert abs(after - slip) <= (1 + kappa) * zeta * mu * speed * (1 + 1e-12) + 1e-15

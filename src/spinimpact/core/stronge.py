@@ -230,70 +230,74 @@ def stronge_restitution(slip, vy, zeta, mu, kappa, stiffness_ratio):
     sigma = np.sign(u)
     stuck = stick.copy()
     changes = np.zeros(u.size, dtype=np.int64)
-    for _ in range(_MAX_ROUNDS):
-        if not active.any():
-            break
-        c = np.where(comp, 1.0, e)
-        # -- slip phases, to their end in closed form --------------------------------
-        i = np.flatnonzero(active & ~stick)
-        if i.size:
-            ti, ui, si, mi, zi, ri, ci, pi = (
-                t[i],
-                u[i],
-                sigma[i],
-                mu[i],
-                zeta[i],
-                r[i],
-                c[i],
-                comp[i],
-            )
-            with np.errstate(divide="ignore", invalid="ignore"):
-                a_c = si * ui - zi * mi * np.cos(ti)
-                b_c = mi * (zi - 1.0 / ri)
-                a_r = si * ui + ci * zi * mi * np.sin(ti)
-                b_r = -mi * (ci * zi - 1.0 / (ci * ri))
-                hit = np.where(pi, a_c < 0, a_r + b_r < 0) & (mi > 0)
-                tc = np.arccos(np.clip(-a_c / np.where(b_c != 0, b_c, 1.0), 0.0, 1.0))
-                tr = np.arcsin(np.clip(-a_r / np.where(b_r != 0, b_r, 1.0), 0.0, 1.0))
-            tend = np.where(hit, np.maximum(np.where(pi, tc, tr), ti), _HALF_PI)
-            du = np.where(pi, np.cos(ti) - np.cos(tend), ci * (np.sin(tend) - np.sin(ti)))
-            u[i] = ui - zi * mi * si * du
-            t[i] = tend
-            x[i] = si * mi * _n(tend, pi)
-            s_i = hit.copy()
-            stick[i] = s_i
-            stuck[i] |= s_i
-            changes[i] += s_i
-        # -- stick phases, one window of samples at a time ---------------------------
-        j = np.flatnonzero(active & stick)
-        if j.size:
-            tj, uj, xj, cj, mj, pj = t[j], u[j], x[j], c[j], mu[j], comp[j]
-            amp = np.hypot(xj, cj * r[j] * uj / (cj * omega[j]))  # |x| <= amp while stuck
-            # it holds while mu n >= amp: to the end of compression, or in restitution to
-            # n = amp/mu (closed form); sample only where it may end
-            level = np.arccos(np.clip(amp / np.where(mj > 0, mj, 1.0), 0.0, 1.0))
-            safe = np.where(pj, np.where(mj * _n(tj, pj) >= amp, _HALF_PI, tj), level)
-            skip = safe > tj
-            end, last = _stick_end(tj, uj, xj, cj, r[j], zeta[j], mj, omega[j], pj, amp)
-            end[skip], last[skip] = np.inf, safe[skip]
-            tnew = np.where(np.isfinite(end), end, last)
-            un, xn = _stick(tnew, tj, uj, xj, cj, r[j], zeta[j], omega[j])
-            leave = np.isfinite(end)
-            sg = np.where(leave, np.sign(xn), sigma[j])
-            u[j], t[j], sigma[j] = un, tnew, sg
-            x[j] = np.where(leave, sg * mu[j] * _n(tnew, comp[j]), xn)
-            stick[j] = ~leave
-            changes[j] += leave
-        # -- the end of a normal phase ------------------------------------------------
-        over = active & (t >= _HALF_PI)
-        ends = over & (~comp | (e == 0))
-        active &= ~ends
-        go_on = over & comp & (e > 0)
-        comp &= ~go_on
-        t[go_on] = 0.0
-    else:  # pragma: no cover - a safeguard, not reached by admissible inputs
-        raise RuntimeError("stronge_restitution: too many stick/slip phases")
-    after = np.where(u0 == 0, 0.0, u * v) + 0.0
+    # tiny mu or kappa (down to subnormal numbers) overflow 1/(c r) and -a/b harmlessly:
+    # the quotients are clipped, and such a phase changes nothing
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        for _ in range(_MAX_ROUNDS):
+            if not active.any():
+                break
+            c = np.where(comp, 1.0, e)
+            # -- slip phases, to their end in closed form --------------------------------
+            i = np.flatnonzero(active & ~stick)
+            if i.size:
+                ti, ui, si, mi, zi, ri, ci, pi = (
+                    t[i],
+                    u[i],
+                    sigma[i],
+                    mu[i],
+                    zeta[i],
+                    r[i],
+                    c[i],
+                    comp[i],
+                )
+                with np.errstate(divide="ignore", invalid="ignore"):
+                    a_c = si * ui - zi * mi * np.cos(ti)
+                    b_c = mi * (zi - 1.0 / ri)
+                    a_r = si * ui + ci * zi * mi * np.sin(ti)
+                    b_r = -mi * (ci * zi - 1.0 / (ci * ri))
+                    hit = np.where(pi, a_c < 0, a_r + b_r < 0) & (mi > 0)
+                    tc = np.arccos(np.clip(-a_c / np.where(b_c != 0, b_c, 1.0), 0.0, 1.0))
+                    tr = np.arcsin(np.clip(-a_r / np.where(b_r != 0, b_r, 1.0), 0.0, 1.0))
+                tend = np.where(hit, np.maximum(np.where(pi, tc, tr), ti), _HALF_PI)
+                du = np.where(pi, np.cos(ti) - np.cos(tend), ci * (np.sin(tend) - np.sin(ti)))
+                u[i] = ui - zi * mi * si * du
+                t[i] = tend
+                x[i] = si * mi * _n(tend, pi)
+                s_i = hit.copy()
+                stick[i] = s_i
+                stuck[i] |= s_i
+                changes[i] += s_i
+            # -- stick phases, one window of samples at a time ---------------------------
+            j = np.flatnonzero(active & stick)
+            if j.size:
+                tj, uj, xj, cj, mj, pj = t[j], u[j], x[j], c[j], mu[j], comp[j]
+                amp = np.hypot(xj, cj * r[j] * uj / (cj * omega[j]))  # |x| <= amp while stuck
+                # it holds while mu n >= amp: to the end of compression, or in restitution to
+                # n = amp/mu (closed form); sample only where it may end
+                level = np.arccos(np.clip(amp / np.where(mj > 0, mj, 1.0), 0.0, 1.0))
+                safe = np.where(pj, np.where(mj * _n(tj, pj) >= amp, _HALF_PI, tj), level)
+                skip = safe > tj
+                end, last = _stick_end(tj, uj, xj, cj, r[j], zeta[j], mj, omega[j], pj, amp)
+                end[skip], last[skip] = np.inf, safe[skip]
+                tnew = np.where(np.isfinite(end), end, last)
+                un, xn = _stick(tnew, tj, uj, xj, cj, r[j], zeta[j], omega[j])
+                leave = np.isfinite(end)
+                sg = np.where(leave, np.sign(xn), sigma[j])
+                u[j], t[j], sigma[j] = un, tnew, sg
+                x[j] = np.where(leave, sg * mu[j] * _n(tnew, comp[j]), xn)
+                stick[j] = ~leave
+                changes[j] += leave
+            # -- the end of a normal phase ------------------------------------------------
+            over = active & (t >= _HALF_PI)
+            ends = over & (~comp | (e == 0))
+            active &= ~ends
+            go_on = over & comp & (e > 0)
+            comp &= ~go_on
+            t[go_on] = 0.0
+        else:  # pragma: no cover - a safeguard, not reached by admissible inputs
+            raise RuntimeError("stronge_restitution: too many stick/slip phases")
+    # the change of slip in units of |c_n^-|, back in m/s: mu = 0 leaves c_t^- as it was
+    after = np.where(u0 == 0, 0.0, u0 + (u - u0 / v) * v) + 0.0
     with np.errstate(divide="ignore", invalid="ignore"):
         beta = np.where(u0 != 0, -after / np.where(u0 != 0, u0, 1.0), np.nan)
     return StrongeRebound(*(a.reshape(shape)[()] for a in (after, stuck, changes, beta)))
