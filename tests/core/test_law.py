@@ -314,3 +314,18 @@ def test_planar_bit_for_bit_from_python_and_compiled_code(name):
     out = np.empty((len(c["vx"]), 5))
     every(*(c[k] for k in names), code, out)
     assert same(out, np.array(got))
+
+
+def test_the_law_without_numba_is_plain_python():
+    """With Numba missing, spinimpact.contact_law imports and computes the same numbers."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['numba'] = None\n"
+        "from spinimpact import contact_law as law\n"
+        "assert not law.HAVE_NUMBA\n"
+        "print(repr(law.rebound(2.0, -3.0, 0.0, 1.0, 0.1, 3.5, 0.5, 0.8)))\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == repr(law.rebound(2.0, -3.0, 0.0, 1.0, 0.1, 3.5, 0.5, 0.8))

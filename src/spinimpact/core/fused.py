@@ -19,6 +19,8 @@ read-only ``HOME``) they are compiled in memory on first use instead
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .._validation import require
@@ -129,26 +131,27 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     if fused and not HAVE_NUMBA:
         require("numba", "fused=True")  # raises ImportError naming the [fast] extra
         raise ImportError(f"fused=True needs numba, which failed to import: {_NUMBA_ERROR}")
-    args = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in
-                                 (vx, vy, omega, mass, radius, zeta, mu, kappa)))  # fmt: skip
-    shape = args[0].shape
+    given = [np.asarray(a, dtype=np.float64) for a in (vx, vy, omega, mass, radius, zeta, mu,
+                                                         kappa)]  # fmt: skip
+    shape = np.broadcast_shapes(*(a.shape for a in given))
     if out is not None and (len(out) != 3 or any(
         o.shape != shape or not o.flags.c_contiguous or o.dtype != np.float64 for o in out
     )):  # fmt: skip
         raise ValueError(f"out must be three C-contiguous float64 arrays of shape {shape}")
-    size = args[0].size
+    size = math.prod(shape)
     if fused is None:
         fused = HAVE_NUMBA and size >= THRESHOLD
     if not fused:
         if size == 1:  # one impact: floats, not 0-d arrays (a dozen NumPy calls saved)
-            values = _scalar_rebound(*(float(a.reshape(-1)[0]) for a in args))[:3]
+            values = _scalar_rebound(*(a.item() for a in given))[:3]
         else:
-            values = _rebound_numpy(*args)[:3]
+            values = _rebound_numpy(*np.broadcast_arrays(*given))[:3]
         if out is None:
             out = tuple(np.empty(shape) for _ in range(3))
         for target, value in zip(out, values, strict=True):
             target[...] = value
         return tuple(out)
+    args = np.broadcast_arrays(*given)
     if out is None:
         out = tuple(np.empty(shape) for _ in range(3))
     targets = [o.reshape(-1) for o in out]

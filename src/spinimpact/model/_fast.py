@@ -40,7 +40,6 @@ _EXACT_INT = 2**53  # Python ints beyond it may not convert as NumPy does: array
 REGIMES = tuple(np.str_(x) for x in _REGIME_NAMES)  #: as the array path names them
 _CASES = tuple(np.str_(x) for x in MIN_ENERGY_CASES)
 _RULES = {name: tuple(ok for ok, _ in rules) for name, rules in RULES.items()}
-_OUTCOMES = ("backward", "reversed_spin", "vertical", "spinning", "rolling")
 _NAMES: dict[type, frozenset[str]] = {}
 
 
@@ -97,14 +96,15 @@ _TEXT = {"regime": np.asarray(_REGIME_NAMES).dtype, "min_energy_case": np.asarra
 
 
 def spread(one: Any, shape: tuple[int, ...]) -> Any:
-    """The result ``one`` of one impact with every field an array of ``shape`` (read-only,
-    of the dtype the array path gives), as the array path returns one-element inputs."""
+    """The result ``one`` of one impact with every field an array of ``shape`` (all its
+    lengths 1; read-only, of the dtype the array path gives), as the array path returns
+    one-element inputs."""
     values = {}
     for name, v in one.__dict__.items():
         if hasattr(v, "_items"):  # a nested result
             values[name] = spread(v, shape)
         elif isinstance(v, np.generic):
-            a = np.full(shape, v, dtype=_TEXT.get(name, v.dtype))
+            a = np.array(v, dtype=_TEXT.get(name, v.dtype), ndmin=len(shape))  # all 1s
             a.setflags(write=False)
             values[name] = a
         else:
@@ -132,7 +132,11 @@ def paper_impact(body: Any, vx: Any, vy: Any, omega: Any, mu: Any, kappa: Any, k
         array holding one element: the result then has the broadcast shape) and the body's
         numbers are floats; the caller then takes the array path.
     """
-    if any(type(x) is np.ndarray and x.ndim for x in (vx, vy, omega, mu, kappa)):
+    nd = np.ndarray
+    if (
+        type(vx) is nd or type(vy) is nd or type(omega) is nd or type(mu) is nd
+        or type(kappa) is nd
+    ) and any(type(x) is nd and x.ndim for x in (vx, vy, omega, mu, kappa)):  # fmt: skip
         arrays = [x for x in (vx, vy, omega, mu, kappa) if type(x) is np.ndarray and x.ndim]
         if any(a.size != 1 for a in arrays):
             return None
@@ -204,7 +208,14 @@ def paper_impact(body: Any, vx: Any, vy: Any, omega: Any, mu: Any, kappa: Any, k
             "poisson_restitution": f((m * (vy1 - vy_) - tau0) / tau0),
             "energetic_restitution": f(math.sqrt(eta2 if eta2 > 0.0 else 0.0)),
             "outcome": build(
-                outcome, dict(zip(_OUTCOMES, [_TRUE if x else _FALSE for x in flags], strict=True))
-            ),
+                outcome,
+                {
+                    "backward": _TRUE if flags[0] else _FALSE,
+                    "reversed_spin": _TRUE if flags[1] else _FALSE,
+                    "vertical": _TRUE if flags[2] else _FALSE,
+                    "spinning": _TRUE if flags[3] else _FALSE,
+                    "rolling": _TRUE if flags[4] else _FALSE,
+                },
+            ),  # fmt: skip
         },
     )

@@ -10,7 +10,7 @@ import numpy as np
 
 from .. import core
 from .._validation import as_real_array, broadcast, check, validated, whole
-from . import _impact_fused, result
+from . import _fast, _impact_fused, result
 from ._hooks import tangential_law
 from .body import Body
 from .result import Result, freeze, plain_repr
@@ -333,6 +333,9 @@ def solve(
         return tangential_law(tangential)._solve_plane(body, vx, vy, omega, mu=mu, kappa=kappa)
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    one = _fast.paper_impact(body, vx, vy, omega, mu, kappa, (Impact, State, Outcome))
+    if one is not None:  # one impact of plain numbers: the same Impact, in microseconds
+        return one
     vx_, vy_, om_, mu_ = (
         validated(n, v) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
