@@ -118,6 +118,7 @@ def main() -> None:
     parser.add_argument(
         "--sweep-points", type=int, default=100_000_000, help="points of the out-of-core sweep"
     )
+    parser.add_argument("--rows", type=int, default=1_000_000, help="rows of the batch files")
     args = parser.parse_args()
     n = args.n
     # An out-of-core sweep in a child process, started before this process holds
@@ -276,12 +277,19 @@ def main() -> None:
         for name, off, total, worst in late:
             phases.add_row(name, f"{off} of {total}", f"{worst:.2g}")
         console.print(phases)
+    from benchmarks.limits import lines as limit_lines  # solve() and batch at their limits
+
+    for line in limit_lines(n, args.rows):
+        console.print(line)
     console.print(
         f"copy bound: {copy_kind}, {moved / t_copy / 1e9:.1f} GB/s of traffic in this run; "
         f"machine: {platform.machine()}, {os.cpu_count()} cores, "
         f"Python {platform.python_version()}, "
         f"NumPy {np.__version__}, Numba {'yes' if fused.HAVE_NUMBA else 'no'}"
     )
+    from benchmarks.one_impact import report as one_impact  # one impact; the compiled law
+
+    one_impact(console)
 
 
 if __name__ == "__main__":
