@@ -25,7 +25,8 @@ kappa t``), with ``c = 1`` or ``kappa`` the phase's time scale, ``t`` in ``[0, p
 * stick: :math:`u' = -c\zeta x,\ x' = c r u`: harmonic at ``c Omega``,
   :math:`\Omega = \sqrt{\zeta r} = \omega_t/\omega_n`, the ratio of the tangential to the
   normal frequency; it lasts while ``|x| < mu n(t)`` (the first crossing is found by
-  sampling at a fine fraction of the period and bisection, vectorized);
+  sampling at a fine fraction of the period, then Newton's method kept inside the
+  bracket, vectorized);
 * slip in direction ``sigma``: ``x = sigma mu n(t)``, :math:`u' = -c\zeta\mu\sigma n`, so
   ``u = u_a - zeta mu sigma (cos t_a - cos t)`` or ``u_a - kappa zeta mu sigma (sin t -
   sin t_a)``; the contact point's velocity :math:`w = u - \mu\sigma n'/(c r)` keeps the
