@@ -17,6 +17,7 @@ import numpy as np
 from .. import core
 from .._validation import check, validated, vector3
 from ..core import sphere3d as kernels
+from . import _fast_sphere
 from .body import Body
 from .impact import _restitution
 from .result import Array, Result, freeze
@@ -170,6 +171,10 @@ def solve_pair(
     for name, ball in (("ball1", ball1), ("ball2", ball2)):
         if not isinstance(ball, Body):
             raise TypeError(f"{name} must be a spinimpact.Body, got {type(ball).__name__}")
+    one = _fast_sphere.pair_impact(ball1, ball2, velocity1, spin1, velocity2, spin2, mu, kappa,
+                                   normal, centres, (PairImpact, State3, Vector))  # fmt: skip
+    if one is not None:  # one impact of plain numbers: the same PairImpact, in microseconds
+        return one
     v1, w1 = vector3("velocity1", velocity1), vector3("spin1", spin1)
     v2, w2 = vector3("velocity2", velocity2), vector3("spin2", spin2)
     mu_ = validated("mu", mu)
