@@ -7,8 +7,9 @@ each input once and write each output once, in parallel over cores.
 
 They perform the same IEEE operations in the same order as the NumPy kernels
 (no fast-math, no fused multiply-add), so the results are identical bit for
-bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba, and
-below :data:`THRESHOLD` impacts where it is faster, :func:`rebound` takes the NumPy path.
+bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba
+:func:`rebound` takes the NumPy path, below :data:`THRESHOLD` impacts too, and for one
+impact the law on floats.
 
 The compiled kernels are cached on disk (Numba's ``cache=True``) where Numba finds a
 writable place (``__pycache__`` beside this file, the user's cache folder under
@@ -89,8 +90,11 @@ if HAVE_NUMBA:
             out_om[i] = omega[i] + (z - 1.0) * f1 / (m * r)
 
 
-#: Fewest impacts for which ``fused=None`` runs the Numba kernel: below it the NumPy path is
-#: faster (starting the kernel's thread pool costs tens of microseconds), with the same bits.
+#: Fewest impacts for which ``fused=None`` runs the Numba kernel. One impact takes the law on
+#: floats (a few microseconds). Below this the NumPy path's cost is bounded (40 to 170 us),
+#: while the parallel kernel's, though a little lower at best (about 30 us, mostly waking its
+#: threads), had a tail of several milliseconds whenever other processes held the cores
+#: (docs/performance.md); above it the kernel's gain outweighs that risk. Same bits either way.
 THRESHOLD = 10_000
 
 
@@ -110,7 +114,7 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     impact), equal bit for bit whichever path computes them. ``fused=None`` picks the
     fastest: the per-contact law on floats (:func:`spinimpact.core.scalar.rebound`) for one
     impact, the NumPy path below :data:`THRESHOLD` impacts or without Numba, the Numba
-    kernel above; ``False`` forces the NumPy path; ``True`` requires Numba and runs its
+    kernel from there on; ``False`` forces the NumPy path; ``True`` requires Numba and runs its
     kernel. ``out`` may give three preallocated C-contiguous float64 arrays of the
     broadcast shape to write into (avoids page-faulting fresh memory on every call in a
     loop over chunks).
