@@ -41,9 +41,13 @@ Stronge (2000), conservative while sticking.
 While the contact slips, ``F = sigma mu N`` (``sigma = +-1``); slip ends when the
 force the spring would take in stick no longer exceeds the cap, i.e. when the
 interface slip velocity ``w = u - d xi/dt`` (``xi`` the spring's displacement)
-reaches zero. Both switches are ``solve_ivp`` events, located to the integrator's
-precision; the event functions are written without divisions by ``delta`` so
-that they stay finite at first touch and at separation.
+reaches zero. Both switches are events of :func:`spinimpact.core.events.integrate_events`,
+watched inside every step, not only at its ends (a stuck spring's force can touch
+the cap for a small part of a step and fall back, a slip phase that comparing signs
+at step ends misses), with steps of at most an eighth of the normal and, while
+sticking, the tangential oscillation period at the stiffest point, and located to
+the integrator's precision; the event functions are written without divisions by
+``delta`` so that they stay finite at first touch and at separation.
 
 References
 ----------
@@ -58,12 +62,14 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import NamedTuple
 
 import numpy as np
 
 from .compliance import mindlin_stiffness_ratio as one_material_ratio
+from .events import Event, integrate_events
 
 __all__ = ["SPRINGS", "TangentialRun", "integrate_tangential", "mindlin_stiffness_ratio"]
 
@@ -195,8 +201,6 @@ def integrate_tangential(
     ``m dv_x/dt = F``, ``J domega/dt = R F``, ``m dv_y/dt = N``. See the module's
     docstring for the stick and slip rules and the energy they keep from growing.
     """
-    from scipy.integrate import solve_ivp
-
     if damping > 0 and exponent != 1.0:
         raise ValueError("viscous damping needs a linear spring (exponent 1)")
     if spring not in SPRINGS:
@@ -245,31 +249,23 @@ def integrate_tangential(
         return [-vy_, f_t / mass, big_n / mass, f_t * radius / inertia, big_n, f_t, big_n * vy_,
                 df, dxi]  # fmt: skip
 
-    def compression_end(_t, y, stick, sigma):
+    def compression_end(_t, y):
         return y[2]
 
-    compression_end.direction = 1
-
-    def separation(_t, y, stick, sigma):
+    def separation(_t, y):
         big_n = normal(y[0], -y[2])
         return math.copysign(abs(big_n) ** (1.0 / n), big_n)
 
-    separation.terminal = True
-    separation.direction = -1
-
-    def cap_up(_t, y, stick, sigma):  # F reaches +mu N
+    def cap_up(_t, y):  # F reaches +mu N
         return mu * max(normal(y[0], -y[2]), 0.0) - y[7]
 
-    def cap_down(_t, y, stick, sigma):  # F reaches -mu N
+    def cap_down(_t, y):  # F reaches -mu N
         return mu * max(normal(y[0], -y[2]), 0.0) + y[7]
 
-    def slip_end(_t, y, stick, sigma):  # -sigma w: the slip velocity reaches zero
+    def slip_end(_t, y, sigma):  # -sigma w: the slip velocity reaches zero
         _, n_rate, unload = rates(y)
         u = y[1] + radius * y[3]
         return -sigma * u + mu * (unload - n_rate)
-
-    for ev in (cap_up, cap_down, slip_end):
-        ev.terminal, ev.direction = True, -1
 
     y = np.array([0.0, vx, vy, omega, 0.0, 0.0, 0.0, 0.0, 0.0])
     u0 = vx + radius * omega
@@ -285,11 +281,25 @@ def integrate_tangential(
     t, t0, tau0, work0 = 0.0, math.nan, math.nan, math.nan
     segments, switches, idle = [], [], 0
     horizon = 1e3 * time_scale
+    # the watch's resolution: steps of at most 1/8 of the shortest period, normal or (while
+    # sticking) tangential, at the stiffest point (elastic peak compression)
+    d_max = ((n + 1.0) * mass * speed**2 / (2.0 * k)) ** (1.0 / (n + 1.0))
+    k_peak = k if n == 1.0 else n * k * d_max ** (n - 1.0)
+    w_n = math.sqrt(k_peak / mass)
+    w_t = math.sqrt(r * k_peak * (1.0 / mass + radius**2 / inertia))
     while True:
-        events = [compression_end, separation]
-        events += [cap_up, cap_down] if stick else ([] if mu == 0.0 else [slip_end])
-        sol = solve_ivp(rhs, (t, t + horizon), y, method="DOP853", args=(stick, sigma),
-                        events=events, rtol=rtol, atol=atol, dense_output=True)  # fmt: skip
+
+        def fun(tt, yy, stick=stick, sigma=sigma):
+            return rhs(tt, yy, stick, sigma)
+
+        events = [Event(compression_end, 1, False), Event(separation, -1)]
+        if stick:
+            events += [Event(cap_up, -1), Event(cap_down, -1)]
+        elif mu != 0.0:
+            events.append(Event(functools.partial(slip_end, sigma=sigma), -1))
+        w_max = max(w_n, w_t) if stick else w_n
+        sol = integrate_events(fun, t, y, t + horizon, events, rtol=rtol, atol=atol,
+                               max_step=2.0 * math.pi / w_max / 8.0)  # fmt: skip
         if sol.status == -1:
             raise RuntimeError(f"contact integration failed: {sol.message}")
         if sol.status == 0:
@@ -297,12 +307,12 @@ def integrate_tangential(
         if sol.t_events[0].size and math.isnan(t0):
             t0, y0 = float(sol.t_events[0][0]), sol.y_events[0][0]
             tau0, work0 = float(y0[4]), float(y0[6])
-        if sol.t[-1] > t:
-            segments.append((t, float(sol.t[-1]), sol.sol, stick, sigma))
+        if sol.t > t:
+            segments.append((t, sol.t, sol.sol, stick, sigma))
             idle = 0
         else:  # a switch at the very start: neither stick nor slip can go on (tangency)
             idle += 1
-        t, y = float(sol.t[-1]), sol.y[:, -1].copy()
+        t, y = sol.t, sol.y.copy()
         if sol.t_events[1].size:
             break
         if idle > 4:
