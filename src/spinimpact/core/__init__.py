@@ -22,6 +22,10 @@ contact
     Compliant contact laws integrated in time.
 fused
     One-pass rebound kernels (optional Numba).
+scalar, scalar3d, scalar_planar, law
+    The same law on plain numbers, one contact per call, bit for bit the kernels'
+    results; ``law`` registers it for users' ``numba.njit`` code
+    (``spinimpact.contact_law``, ``docs/compiled.md``).
 """
 
 from .energetics import (

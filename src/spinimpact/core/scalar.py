@@ -4,7 +4,7 @@ The array kernels (:mod:`spinimpact.core.impulse`, :mod:`spinimpact.core.works`,
 :mod:`spinimpact.core.kinematics`) evaluate each quantity with ``where`` over whole arrays.
 The functions here take Python floats and return floats, ints, bools or tuples of them,
 performing **the same IEEE operations in the same order** as those kernels, so their results
-are equal bit for bit (``tests/core/test_scalar.py`` checks this on random impacts in every
+are equal bit for bit (``tests/core/test_law.py`` checks this on random impacts in every
 regime). They are written in the subset of Python that Numba compiles, and
 :mod:`spinimpact.core.law` registers them so that a user's ``numba.njit`` code may call
 them; called from Python they are plain Python (``solve`` uses them for one impact).
