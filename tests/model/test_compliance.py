@@ -247,3 +247,31 @@ def test_stronge_parameters():
     ]:
         with pytest.raises(error, match=message):
             Stronge(**kwargs)
+
+
+@pytest.mark.parametrize("law", [Walton(beta0=0.3), Stronge(poisson_ratio=0.3)])
+def test_indexing_selects_the_body_of_each_impact(law):
+    """As Impact[i]: an array-valued body is broadcast and indexed with the impacts, so
+    that each selected impact equals the one solved alone with its own body (zeta
+    included: a preset row keeps its exact zeta)."""
+    body = Body(mass=[1.0, 2.0], radius=0.1, gyration=[0.05, 0.2])
+    imp = solve(body, [[1.0], [2.0], [3.0]], -1.0, 0.0, mu=0.4, kappa=0.6, tangential=law)
+    assert imp.shape == (3, 2)
+    one = solve(Body(mass=2.0, radius=0.1, gyration=0.2), 3.0, -1.0, 0.0, mu=0.4, kappa=0.6,
+                tangential=law)  # fmt: skip
+    picked = imp[2, 1]
+    assert picked.body.mass == 2.0 and picked.body.gyration == 0.2
+    assert picked.body.zeta == one.body.zeta and picked.after.omega == one.after.omega
+    row = imp[1]
+    assert row.shape == (2,) and list(row.body.mass) == [1.0, 2.0]
+    mixed = Body.from_columns(mass=np.array([1.0, 1.0]), radius=np.array([0.1, 0.1]),
+                              preset=np.array(["solid-sphere", ""]),
+                              gyration=np.array([np.nan, 0.05]))  # fmt: skip
+    for k, each in enumerate(solve(mixed, 1.0, -1.0, 0.0, mu=0.4, kappa=0.6, tangential=law)):
+        assert each.body.zeta == mixed.zeta[k] and np.ndim(each.body.mass) == 0
+    assert Body.solid_sphere(mass=1.0, radius=0.1)._at((2,), 0).mass == 1.0
+    sphere = solve_sphere(body, [[[1.0, -1.0, 0.0]], [[2.0, -1.0, 0.0]]], [0.0, 0.0, 0.0],
+                          mu=0.4, kappa=0.6, tangential=law)  # fmt: skip
+    assert sphere.shape == (2, 2) and sphere[1, 0].body.mass == 1.0
+    assert sphere[1, 0].body.gyration == 0.05 and sphere[0].body.mass.shape == (2,)
+

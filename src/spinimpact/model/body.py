@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -165,6 +166,15 @@ class Body(BodyColumns):
         zeta = np.where(custom, body.zeta, 1.0 + 1.0 / ratio)
         object.__setattr__(body, "_zeta", zeta)
         return body
+
+    def _at(self, shape: tuple[int, ...], index: Any) -> Body:
+        """The body of the impacts ``[index]`` of a result of ``shape``: itself when its
+        parameters are numbers, else its parameters broadcast to ``shape`` and indexed."""
+        parts = (self.mass, self.radius, self.gyration, self.zeta)
+        if not any(np.ndim(x) for x in parts):
+            return self
+        m, r, g, z = (np.broadcast_to(x, shape)[index] for x in parts)
+        return self._with_zeta(z, mass=m, radius=r, gyration=g)
 
     def _with_zeta(self, zeta: float | np.ndarray, **parts: object) -> Body:
         """Copy with other mass/radius/gyration (e.g. one element) and the given zeta."""

@@ -10,7 +10,7 @@ goes back to the body as in the rigid law, and the normal problem is the rigid o
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -94,6 +94,9 @@ class CompliantImpact(Result):
     newton_restitution: Array
 
     _shape_field = "tau1"
+
+    def __getitem__(self, index: Any) -> CompliantImpact:
+        return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
     def __repr__(self) -> str:
         if self.shape != ():
@@ -204,6 +207,9 @@ class CompliantSphereImpact(Result):
     gyrospin: Array
 
     _shape_field = "tau1"
+
+    def __getitem__(self, index: Any) -> CompliantSphereImpact:
+        return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
 
 def solve_sphere_compliant(

@@ -173,12 +173,7 @@ class Impact(Result):
 
     def __getitem__(self, index: Any) -> Impact:
         imp = super().__getitem__(index)
-        body = self.body
-        parts = (body.mass, body.radius, body.gyration, body.zeta)
-        if any(np.ndim(x) for x in parts):
-            m, r, g, z = (np.broadcast_to(x, self.shape)[index] for x in parts)
-            body = body._with_zeta(z, mass=m, radius=r, gyration=g)
-        return replace(imp, body=body)
+        return replace(imp, body=self.body._at(self.shape, index))
 
     def history(self, n: int = 201, *, tau: Any = None) -> History:
         """The impact process over the normal impulse ``tau`` (Figs. 2-5).
