@@ -76,6 +76,9 @@ def test_regime_codes():
     )
     names = np.asarray(cc.COMPLIANT_REGIMES)[code]
     assert names.tolist() == ["frictionless", "no-slip", "stick", "slip-reversal", "slip"]
+    none = cc.compliant_regime_code(np.array([1.0, 0.0]), np.array([1.0, 0.0]),
+                                    np.array([0.5, 0.5]), np.array([True, True]), True)  # fmt: skip
+    assert np.asarray(cc.COMPLIANT_REGIMES)[none].tolist() == ["frictionless"] * 2
 
 
 @pytest.mark.parametrize("nu", [0.0, 0.23, 0.3, 0.33, 0.5])

@@ -275,3 +275,25 @@ def test_indexing_selects_the_body_of_each_impact(law):
     assert sphere.shape == (2, 2) and sphere[1, 0].body.mass == 1.0
     assert sphere[1, 0].body.gyration == 0.05 and sphere[0].body.mass.shape == (2,)
 
+
+def test_walton_beta0_minus_one_is_frictionless():
+    """beta = min(-1, beta_slide) = -1: the contact point keeps its slip and no friction
+    impulse acts, the outcome of mu = 0, so the regime is mu = 0's, "frictionless" (it
+    was "stick": the stick branch's test (1 + beta0)|u-| <= ... holds trivially)."""
+    c = random_cases(400, seed=5)
+    args = (_body(c), c["vx"], c["vy"], c["omega"])
+    soft = solve(*args, mu=c["mu"], kappa=c["kappa"], tangential=Walton(-1.0))
+    none = solve(*args, mu=0.0, kappa=c["kappa"], tangential=Walton(0.3))
+    np.testing.assert_array_equal(soft.after.vx, none.after.vx)
+    np.testing.assert_array_equal(soft.after.omega, none.after.omega)
+    assert (soft.tangential_impulse == 0).all() and (soft.regime == "frictionless").all()
+    assert (none.regime == "frictionless").all()
+    assert Walton(-1).frictionless and not Walton(-0.999).frictionless
+    assert not Stronge(poisson_ratio=0.3).frictionless
+    near = solve(*args, mu=c["mu"], kappa=c["kappa"], tangential=Walton(-0.999))
+    assert "frictionless" not in set(near.regime[c["mu"] > 0])
+    assert (c["mu"] > 0).sum() >= 300
+    sphere = solve_sphere(Body.solid_sphere(mass=1.0, radius=0.1), [1.0, -2.0, 0.5],
+                          [3.0, 0.0, 0.0], mu=0.4, kappa=0.7, tangential=Walton(-1.0))  # fmt: skip
+    assert str(sphere.regime) == "frictionless"
+    assert float(np.abs(sphere.friction_impulse.array).max()) == 0.0

@@ -161,20 +161,33 @@ def walton_slip(slip, vy, zeta, mu, kappa, beta0):
     return xp.where(stuck, -beta0 * slip, slide) + 0.0, stuck
 
 
-def compliant_regime_code(slip, slip_after, mu, stuck):
+def compliant_regime_code(slip, slip_after, mu, stuck, frictionless=False):
     """Integer code of the regime under a compliance law; ``COMPLIANT_REGIMES[code]``.
+
+    Parameters
+    ----------
+    slip, slip_after : float or array
+        ``c_t^-`` and ``c_t^+``, m/s.
+    mu : float or array
+        Friction coefficient.
+    stuck : bool or array
+        Whether the contact point stuck during the impact.
+    frictionless : bool
+        The law applies no friction whatever ``mu`` (Walton's ``beta_0 = -1``: the contact
+        point keeps its slip, ``f_1 = 0``, the outcome of ``mu = 0``).
 
     Returns
     -------
     code : int8 array
-        0 ``frictionless`` (``mu = 0``), 1 ``no-slip`` (``c_t^- = 0``), 2 ``stick`` (the
-        contact stuck and leaves with ``beta <= 0``), 3 ``slip-reversal`` (it stuck and
-        leaves slipping the other way, ``beta > 0``), 4 ``slip`` (it slid throughout).
+        0 ``frictionless`` (``mu = 0``, or a law without friction), 1 ``no-slip``
+        (``c_t^- = 0``), 2 ``stick`` (the contact stuck and leaves with ``beta <= 0``),
+        3 ``slip-reversal`` (it stuck and leaves slipping the other way, ``beta > 0``),
+        4 ``slip`` (it slid throughout).
     """
     xp, (slip, slip_after, mu, stuck) = arrays(slip, slip_after, mu, stuck)
     code = xp.where(stuck, xp.where(slip_after * slip < 0, 3, 2), 4)
     code = xp.where(slip == 0, 1, code)
-    return xp.astype(xp.where(mu == 0, 0, code), xp.int8)
+    return xp.astype(xp.where((mu == 0) | bool(frictionless), 0, code), xp.int8)
 
 
 def slip_after_restitution(slip, beta):

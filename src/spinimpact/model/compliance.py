@@ -55,6 +55,12 @@ class TangentialLaw:
         ``zeta``, ``mu``, ``kappa`` (arrays of one shape); ``stuck``: it stuck at all."""
         raise NotImplementedError
 
+    @property
+    def frictionless(self) -> bool:
+        """Whether the law applies no friction whatever ``mu``: its impacts are
+        ``frictionless``, as those with ``mu = 0``."""
+        return False
+
     def to_dict(self) -> dict[str, Any]:
         """The law's name and parameters as plain Python values."""
         return {"law": self.name, **{k: v for k, v in vars(self).items()}}
@@ -78,7 +84,8 @@ class Walton(TangentialLaw):
     beta0 : float
         Tangential restitution of the contact point in sticking impacts, in ``[-1, 1]``:
         ``0`` is the rigid law (the contact point leaves at rest), ``> 0`` a slip reversal
-        (the ball leaves spinning faster than rolling), ``-1`` no friction at all.
+        (the ball leaves spinning faster than rolling), ``-1`` no friction at all (the
+        impacts' regime is then ``frictionless``, as for ``mu = 0``).
 
     Notes
     -----
@@ -95,6 +102,12 @@ class Walton(TangentialLaw):
 
     def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
         return kernels.walton_slip(slip, vy, zeta, mu, kappa, self.beta0)
+
+    @property
+    def frictionless(self) -> bool:
+        """``beta0 = -1``: ``beta = min(-1, beta_slide) = -1`` for every impact, the contact
+        point keeps its slip and no friction impulse acts (the outcome of ``mu = 0``)."""
+        return self.beta0 == -1.0
 
     def __repr__(self) -> str:
         return f"Walton(beta0={self.beta0!r})"

@@ -34,8 +34,10 @@ def _ratio(num: Any, den: Any) -> np.ndarray:
         return np.where(den != 0, num / np.where(den != 0, den, 1.0), np.nan)
 
 
-def _regime(slip: Any, slip_after: Any, mu: Any, stuck: Any) -> Array:
-    code = laws.compliant_regime_code(slip, slip_after, mu, stuck)
+def _regime(slip: Any, slip_after: Any, mu: Any, stuck: Any, law: Any) -> Array:
+    code = laws.compliant_regime_code(
+        slip, slip_after, mu, stuck, getattr(law, "frictionless", False)
+    )
     return freeze(np.asarray(laws.COMPLIANT_REGIMES)[code])
 
 
@@ -143,7 +145,7 @@ def solve_compliant(law: Any, body: Body, vx: Any, vy: Any, omega: Any, *, mu: A
         slip_before=freeze(slip), slip_after=freeze(slip1),
         tangential_restitution=freeze(_ratio(-slip1, slip)),
         centre_tangential_restitution=freeze(_ratio(vx1, vx_)),
-        regime=_regime(slip, slip1, mu_, stuck), tau0=freeze(tau0), tau1=freeze(tau1),
+        regime=_regime(slip, slip1, mu_, stuck, law), tau0=freeze(tau0), tau1=freeze(tau1),
         tangential_impulse=freeze(f1), impulse_ratio=freeze(f1 / tau1),
         kinetic_energy_before=freeze(e0), kinetic_energy_after=freeze(e1),
         dissipated_energy=freeze(e0 - e1), dissipated_fraction=freeze((e0 - e1) / e0),
@@ -256,8 +258,9 @@ def solve_sphere_compliant(
         slip_after=_vector(np.asarray(speed1)[..., None] * c.direction),
         normal_velocity_before=freeze(cn), normal_velocity_after=freeze(c1.normal_velocity),
         tangential_restitution=freeze(_ratio(-speed1, speed)),
-        regime=_regime(speed, speed1, mu_, stuck), tau0=freeze(core.compression_impulse(m, cn)),
-        tau1=freeze(tau1), friction_impulse=_vector(friction),
+        regime=_regime(speed, speed1, mu_, stuck, law),
+        tau0=freeze(core.compression_impulse(m, cn)), tau1=freeze(tau1),
+        friction_impulse=_vector(friction),
         impulse_ratio=freeze(np.abs(f1) / tau1), kinetic_energy_before=freeze(e0),
         kinetic_energy_after=freeze(e1), dissipated_energy=freeze(loss),
         dissipated_fraction=freeze(loss / e0_rel),
