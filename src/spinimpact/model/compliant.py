@@ -213,6 +213,18 @@ class CompliantSphereImpact(Result):
     def __getitem__(self, index: Any) -> CompliantSphereImpact:
         return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
+    def __repr__(self) -> str:
+        if self.shape != ():
+            names, counts = np.unique(self.regime, return_counts=True)
+            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+            return f"<CompliantSphereImpact of shape {self.shape} ({self.law!r}): {summary}>"
+        a = self.after
+        v, w = (", ".join(f"{float(x):.6g}" for x in vec) for vec in (a.velocity, a.spin))
+        return (
+            f"<CompliantSphereImpact {self.regime} ({self.law!r}): after v=({v}) m/s, "
+            f"spin=({w}) rad/s; beta={self.tangential_restitution:.6g}>"
+        )
+
 
 def solve_sphere_compliant(
     law: Any, body: Body, velocity: Any, spin: Any, *, mu: Any, kappa: Any,

@@ -106,6 +106,14 @@ class Simulation(Result):
         b = self.before
         return solve(self.body, b.vx, b.vy, b.omega, mu=self.mu, kappa=self.newton_restitution)
 
+    def __repr__(self) -> str:
+        a = self.after
+        return (
+            f"<Simulation ({self.contact!r}): after vx={a.vx:.6g} m/s, vy={a.vy:.6g} m/s, "
+            f"omega={a.omega:.6g} rad/s; Newton restitution {self.newton_restitution:.6g}, "
+            f"contact {self.contact_duration:.6g} s, {self.t.size} samples>"
+        )
+
 
 def simulate(
     body: Body,

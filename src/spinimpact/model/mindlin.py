@@ -190,6 +190,16 @@ class TangentialSimulation(Result):
         b = self.before
         return solve(self.body, b.vx, b.vy, b.omega, mu=self.mu, kappa=self.newton_restitution)
 
+    def __repr__(self) -> str:
+        a = self.after
+        return (
+            f"<TangentialSimulation ({self.tangential!r}, k_t/k_n={self.stiffness_ratio:.6g}, "
+            f"{self.contact!r}): after vx={a.vx:.6g} m/s, vy={a.vy:.6g} m/s, "
+            f"omega={a.omega:.6g} rad/s; beta={self.tangential_restitution:.6g}, "
+            f"{self.switches} stick/slip switches, contact {self.contact_duration:.6g} s, "
+            f"{self.t.size} samples>"
+        )
+
 
 def _normal_parameters(contact: ContactLaw) -> dict[str, float]:
     """The normal law as ``(stiffness, exponent, alpha, damping)`` of the kernel."""
