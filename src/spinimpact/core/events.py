@@ -41,11 +41,14 @@ _EPS = float(np.finfo(float).eps)
 
 class Event(NamedTuple):
     """An event function ``g(t, y)`` whose zero crossing in ``direction`` (``-1``:
-    falling, ``+1``: rising) is an event; ``terminal`` ones end the integration."""
+    falling, ``+1``: rising) is an event; ``terminal`` ones end the integration.
+    ``watched=False``: evaluated at the ends of the steps only, as ``solve_ivp`` does
+    (for a function known to cross zero once, without dips)."""
 
     function: Callable[[float, np.ndarray], float]
     direction: int
     terminal: bool = True
+    watched: bool = True
 
 
 class EventRun(NamedTuple):
@@ -81,20 +84,20 @@ def _vertex(ta, ha, tb, hb, tc, hc):
 def _crossing(h, hist, s, value):
     """The first zero of ``h`` (falling) between the last samples ``hist`` and the new
     sample ``(s, value)``, or ``None``."""
-    from scipy.optimize import brentq, minimize_scalar
-
     ta, ha = hist[-1]
-
-    def fixed(t, a=ta, va=ha):  # the samples' own values at the bracket's ends
-        return va if t == a else (value if t == s else h(t))
-
     if ha >= 0.0 >= value:
+        from scipy.optimize import brentq
+
+        def fixed(t, a=ta, va=ha):  # the samples' own values at the bracket's ends
+            return va if t == a else (value if t == s else h(t))
+
         return brentq(fixed, ta, s, xtol=4 * _EPS, rtol=4 * _EPS)
     if len(hist) < 2:
         return None
     (t0, h0), (t1, h1) = hist
     if not (h0 > h1 < value and h1 > 0.0) or _vertex(t0, h0, t1, h1, s, value) > 0.75 * h1:
         return None
+    from scipy.optimize import brentq, minimize_scalar
 
     def probe(t):
         v = h(t)
@@ -200,7 +203,8 @@ def integrate_events(
         stop = math.inf
         for i, ev in enumerate(events):
             sign, hist = -float(ev.direction), hists[i]
-            for s, y in zip(times, samples, strict=True):
+            points = zip(times, samples, strict=True) if ev.watched else [(t_new, samples[-1])]
+            for s, y in points:
                 value = sign * ev.function(s, y)
                 root = _crossing(hs[i], hist, s, value)
                 hist[:] = [*hist[-1:], (s, value)]

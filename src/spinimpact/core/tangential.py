@@ -292,7 +292,8 @@ def integrate_tangential(
         def fun(tt, yy, stick=stick, sigma=sigma):
             return rhs(tt, yy, stick, sigma)
 
-        events = [Event(compression_end, 1, False), Event(separation, -1)]
+        # v_y and N^(1/n) cross zero once (N >= 0 until separation): step ends suffice
+        events = [Event(compression_end, 1, False, False), Event(separation, -1, True, False)]
         if stick:
             events += [Event(cap_up, -1), Event(cap_down, -1)]
         elif mu != 0.0:
