@@ -4,25 +4,32 @@ SciPy's ``solve_ivp`` looks for an event where the event function has opposite s
 at the two ends of a step, so a function that dips through zero and back within one
 step is never seen: a short slip phase of a stuck contact (the spring force touching
 Coulomb's cap for a moment), a short stick phase of a slipping one.
-:func:`integrate_events` steps SciPy's DOP853 itself and watches every event function
+:func:`integrate_events` steps SciPy's DOP853 itself and watches each event function
 on the step's dense output (the integrator's own interpolant, of the integrator's
 order):
 
 * at ``watch`` evenly spaced points of each step (the step itself bounded by
   ``max_step``, which the caller sets to a fraction of the shortest oscillation
   period, so that the points resolve every extremum), it looks for a change of sign,
-  as ``solve_ivp`` does between step ends;
+  as ``solve_ivp`` does between step ends (an event that crosses zero once, without
+  dips, may be looked at at the step ends only: ``Event.watched``);
 * where three consecutive points bracket a minimum of the function that stays
   positive at the points (a maximum for a rising event), the parabola through them
-  predicts the minimum's value; when that is within a quarter of the lowest point's
-  height of zero (a dip that could reach zero), the minimum is searched for on the
-  interpolant (bounded Brent, stopping at the first value at or below zero), and if
-  it is reached, the crossing before it is the event;
+  predicts the minimum's value; when that lies at least a quarter of the way from the
+  lowest point down to zero (a dip that could reach zero), the minimum is searched for
+  on the interpolant (bounded Brent, stopping at the first value at or below zero),
+  and if zero is reached, the crossing before it is the event;
 * each crossing is polished by Brent's method on the interpolant to ``4 eps``, as
-  ``solve_ivp`` polishes its own.
+  ``solve_ivp`` polishes its own;
+* the step that holds a terminal event is integrated anew from its start up to the
+  event, and the run's final state is that integration's: the right-hand side may
+  change its form at the event (a contact force that ends at separation), and the
+  interpolant of a step across such a change is less accurate than the integrator.
 
-Dips shallower than the parabola test can tell from zero are below the integrator's
-precision: the function crosses zero by less than the interpolant's error.
+A dip is missed only where the parabola misjudges its minimum by more than three
+quarters of its height, which steps that resolve the oscillations rule out for smooth
+functions; a dip that reaches below zero by less than the interpolant's error is
+below the integrator's precision either way.
 """
 
 from __future__ import annotations
