@@ -62,3 +62,20 @@ def test_spring_rule_reaches_the_law(capsys):
     )
     row = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("vx+ (m/s)"))
     assert float(row.split()[2]) / 0.136 > 0.99  # the total rule at 2 degrees: e_t near 1
+
+
+def test_duration_in_microseconds_and_rigid_beta_exact(capsys):
+    """A 6 us contact reads in us, and the rigid law's beta of a sticking impact is 0
+    (not the 1e-17 its rounded velocities give); a sliding one keeps -u+/u-."""
+    import re
+
+    main([*KHARAZ, "--tangential", "mindlin"])
+    out = capsys.readouterr().out
+    duration = re.search(r"contact duration ([\d.]+) us,", out)
+    assert duration is not None and 5 < float(duration.group(1)) < 7  # Hertz: 6.2 us
+    beta = next(x for x in out.splitlines() if x.startswith("beta = -u+/u-")).split()
+    assert beta[-1] == "0" and float(beta[-2]) > 0.3
+    main([*KHARAZ, "--tangential", "mindlin", "--mu", "0.01"])  # slides throughout
+    beta = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("beta = -u+/u-"))
+    expected = -(1 - 3.5 * 0.01 * (1 + 0.98) * 3.665 / 1.334)  # u+ = u- - zeta mu (1+k)|vy|
+    assert float(beta.split()[-1]) == pytest.approx(expected, rel=1e-3)

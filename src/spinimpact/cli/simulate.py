@@ -132,7 +132,7 @@ def _print_tangential(sim: Any) -> None:
     """The rebound with tangential compliance beside the rigid closed form."""
     rigid = sim.rigid()
     click.echo(f"Hertz-Mindlin impact with {sim.contact!r}, k_t/k_n = {sim.stiffness_ratio:.6g}")
-    click.echo(f"contact duration {sim.contact_duration * 1e3:.6g} ms, peak normal force "
+    click.echo(f"contact duration {_duration(sim.contact_duration)}, peak normal force "
                f"{sim.peak_force:.6g} N, {sim.switches} stick/slip switches")  # fmt: skip
     click.echo(f"{'':24s}{'compliant':>14s}{'rigid':>14s}")
     rows = (("vx+ (m/s)", sim.after.vx, rigid.after.vx),
@@ -143,7 +143,19 @@ def _print_tangential(sim: Any) -> None:
         click.echo(f"{name:24s}{float(a):14.6g}{float(b):14.6g}")
 
 
+def _duration(seconds: float) -> str:
+    """A duration in us below 1 ms, in ms below 1 s, else in s (six digits)."""
+    for unit, scale in (("us", 1e-6), ("ms", 1e-3)):
+        if abs(seconds) < 1e3 * scale:
+            return f"{seconds / scale:.6g} {unit}"
+    return f"{seconds:.6g} s"
+
+
 def _beta(sim: Any, rigid: Any) -> float:
+    """The rigid law's ``beta = -u+/u-``: exactly 0 where its slip stops (a stick regime;
+    the closed form leaves ``u+ = 0``, which the velocities give only to rounding)."""
+    if str(rigid.regime).startswith("stick"):
+        return 0.0
     b = sim.before
     u0 = float(b.vx + sim.body.radius * b.omega)
     u1 = float(rigid.after.vx + sim.body.radius * rigid.after.omega)
