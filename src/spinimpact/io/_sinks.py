@@ -57,7 +57,11 @@ class ArrowWriter:
         self.schema = schema
         if self.fmt == "parquet":
             pq = require("pyarrow.parquet", "Parquet files")
-            self.writer = pq.ParquetWriter(self.path, schema)
+            # Dictionary pages for text only: a chunk of distinct floats fits under the
+            # dictionary's size limit, so every value would be hashed for nothing (the
+            # values and types read back are the same either way).
+            text = [f.name for f in schema if self.pa.types.is_string(f.type)]
+            self.writer = pq.ParquetWriter(self.path, schema, use_dictionary=text)
         else:
             pc = require("pyarrow.csv", "fast CSV")
             options = pc.WriteOptions(quoting_style="needed")

@@ -31,6 +31,7 @@ from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import Impact, solve
 from ._arrow_csv import csv_chunks as arrow_csv_chunks
+from ._background import BackgroundRows
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
 from ._stop import check as stop_check
 from ._tables import (
@@ -162,11 +163,8 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
             note(i, f"{chunk.where(i, 'body')}: give either body or gyration, not both")
         values["gyration"][given & ~own_gyration] = np.nan  # the row's preset wins
     # every row the default preset (no body or gyration column): one preset body
-    one_preset = (
-        defaults.get("body") in PRESETS
-        and defaults.get("gyration") is None
-        and not ({"body", "gyration"} & set(chunk.columns))
-    )
+    one_preset = defaults.get("body") in PRESETS and defaults.get("gyration") is None
+    one_preset = one_preset and not {"body", "gyration"} & set(chunk.columns)
     custom = ~np.isnan(values["gyration"])
     unknown = np.zeros(n, bool) if one_preset else ~custom & ~np.isin(preset, list(PRESETS))
     for i in np.flatnonzero(unknown):
@@ -379,7 +377,8 @@ def run_batch(
     rows = skipped = 0
     with output_target(output) as target:
         if fmt_out == "parquet" or _have_pyarrow():
-            sink: ArrowRows | CsvRows = ArrowRows(target, header, kinds, skip, fmt_out, numeric)
+            rows_out = ArrowRows(target, header, kinds, skip, fmt_out, numeric)
+            sink: BackgroundRows | CsvRows = BackgroundRows(rows_out)  # Arrow frees the GIL
         else:
             sink = CsvRows(target, header, kinds, skip)
         complete = False
