@@ -22,7 +22,7 @@ from .model.compliance import (
     TangentialLaw,
     Walton,
 )
-from .model.fit import FitResult, fit
+from .model.fit import FitResult, FitWarning, fit
 from .model.fit_data import MeasuredBounces
 from .model.fit_drops import fit_drops
 from .model.flight import flight, launch
@@ -49,6 +49,7 @@ __all__ = [
     "fit_drops",
     "MeasuredBounces",
     "FitResult",
+    "FitWarning",
     "flight",
     "launch",
     "Flight",

@@ -309,3 +309,13 @@ def test_profiles_that_keep_finding_lower_chi2_are_a_warning(monkeypatch):
     data = bounces(solve(BALL, vx, vy, om, mu=0.3, kappa=0.7).after, vx, vy, om, noise=1.0)
     with pytest.warns(FitWarning, match="several minima"):
         fit(data, BALL)
+
+
+def test_the_package_exports_fitwarning_and_the_docstring_names_every_model():
+    import spinimpact
+    from spinimpact.model.fit_models import TANGENTIAL
+
+    assert spinimpact.FitWarning is FitWarning and "FitWarning" in spinimpact.__all__
+    doc = fit.__doc__.split("model :")[1].split("restitution :")[0]
+    for name in TANGENTIAL:
+        assert f'"{name}"' in doc

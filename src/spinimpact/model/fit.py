@@ -92,9 +92,13 @@ def fit(
     body : Body
         The body. Its radius turns spin into contact-point speed; its mass does not
         matter (the rebound velocities do not depend on it).
-    model : str
-        The tangential model: ``"rigid"`` (Coulomb friction ``mu``, the paper's
-        closed form).
+    model : {"rigid", "walton", "stronge"}
+        The tangential model (:data:`~spinimpact.model.fit_models.TANGENTIAL`):
+        ``"rigid"`` (Coulomb friction ``mu``, the paper's closed form);
+        ``"walton"`` (``mu`` and Walton's tangential restitution ``beta0`` of
+        :class:`~spinimpact.model.compliance.Walton`); ``"stronge"`` (``mu`` and the
+        ``poisson_ratio`` of :class:`~spinimpact.model.compliance.Stronge`'s lumped
+        tangential compliance).
     restitution : {"constant", "power"} or sequence of float
         ``kappa`` constant; ``kappa = kappa_ref (|vy|/v_ref)^exponent`` (clipped to
         ``[0, 1]``); or knot speeds (m/s) at which ``kappa`` is fitted and between which
