@@ -121,6 +121,32 @@ def test_bad_input_is_one_line(tmp_path, capsys, text, extra, needle):
     assert needle in line
 
 
+@pytest.mark.parametrize(
+    "text, extra, needle",
+    [
+        ("# c\n" + HEADER + "\n1,-2,0,0.5,1,0\n# c\n\n2,2,0,0.5,1,0\n", (),
+         "bad.csv: row 6: vy must be < 0 (each bounce must approach the surface), got 2.0"),
+        (HEADER + "\n1,-2,0,0.5,1,0\n# c\n2,-2,0,x,1,0\n", (),
+         "bad.csv: row 4, column after_vx: 'x' is not a number"),
+        (HEADER + ",sigma_after_vx,sigma_after_vy,sigma_after_omega\n\n1,-2,0,0.5,1,0,1,1,1\n"
+         "1,-2,0,0.5,1,0,1,-1,1\n", (), "bad.csv: row 4: sigma_after_vy must be > 0"),
+        ("# d\ndrop_height,rebound_height\n1,0.5\n2,2.5\n", ("--drops",),
+         "bad.csv: row 4: rebound height 2.5 > drop height 2.0 (a ball"),
+        ("# d\ndrop_height,rebound_height\n1,0.5\n\n2,\n", ("--drops",),
+         "bad.csv: row 5: column rebound_height is empty"),
+        ("drop_height,rebound_height\n1,0.5\n# d\n-2,0.5\n", ("--drops",),
+         "bad.csv: row 4: drop heights must be > 0, got -2.0"),
+    ],
+)  # fmt: skip
+def test_a_bad_row_is_named_by_its_line_in_the_file(tmp_path, capsys, text, extra, needle):
+    """Comments and blank lines counted, as the errors about a cell count them; no index
+    among the data rows."""
+    src = tmp_path / "bad.csv"
+    src.write_text(text)
+    line = run_main(capsys, "fit", src, "--radius", "0.033", *extra)
+    assert needle in line and "index" not in line
+
+
 def test_usage_errors_are_one_line(tmp_path, capsys):
     src = bounce_file(tmp_path)
     assert "--radius is needed" in run_main(capsys, "fit", src)

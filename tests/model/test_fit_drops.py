@@ -54,6 +54,10 @@ def test_the_height_error_becomes_the_speed_error():
     [
         (([1.0, 0.5], [0.6]), {}, "must be 1-D of one length"),
         (([1.0, 0.5], [1.2, 0.3]), {}, "cannot rebound higher"),
+        (([1.0, 2.0, 3.0], [0.5, 2.5, 3.5]), {},
+         r"^rebound height 2\.5 > drop height 2\.0 at index 1 "),
+        (([1.0, 2.0], [0.5, 2.5]), {"heights": False},
+         r"^rebound speed 2\.5 > drop speed 2\.0 at index 1 "),
         (([1.0, -0.5], [0.6, 0.3]), {}, r"drop heights must be > 0.*index 1"),
         (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01}, "together"),
         (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01, "sigma_after": 0.0}, "> 0"),

@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import re
 import warnings
 from pathlib import Path
 from typing import Any
@@ -17,7 +18,7 @@ from ..model.body import PRESETS, Body
 from ..model.fit_models import TANGENTIAL
 from ._common import image_format, jsonable
 
-__all__ = ["fit_command", "read_columns", "DROP_COLUMNS"]
+__all__ = ["fit_command", "read_columns", "read_table", "DROP_COLUMNS"]
 
 #: Columns of a drop-test file: heights (m) or speeds (m/s), with optional sigmas.
 DROP_COLUMNS = {
@@ -36,17 +37,31 @@ def read_columns(path: str) -> dict[str, np.ndarray]:
         Naming the file, line and column of a cell that is not a number, or a file
         with no header or no rows.
     """
+    return read_table(path)[0]
+
+
+def read_table(path: str) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """:func:`read_columns` and the file's line number (from 1) of each data row, so that
+    an error about a row names the line it is on, comments and blank lines counted."""
+    numbers: list[int] = []
+
+    def content(fh: Any) -> Any:  # the lines csv reads, with their line numbers kept
+        for number, line in enumerate(fh, start=1):
+            if not line.lstrip().startswith("#"):
+                numbers.append(number)
+                yield line
+
     with open(path, newline="", encoding="utf-8") as fh:
-        lines = (line for line in fh if not line.lstrip().startswith("#"))
-        reader = csv.reader(lines)
+        reader = csv.reader(content(fh))
         header = next(reader, None)
         if not header:
             raise ValueError(f"{path}: empty file (no header line)")
         names = [h.strip() for h in header]
         if len(set(names)) != len(names):
             raise ValueError(f"{path}: repeated column names in the header: {names}")
-        rows = []
-        for line, row in enumerate(reader, start=2):
+        rows, lines = [], []
+        for row in reader:
+            line = numbers[-1]  # a quoted cell may span lines: the row's last line
             if not any(cell.strip() for cell in row):
                 continue
             if len(row) != len(names):
@@ -66,10 +81,27 @@ def read_columns(path: str) -> dict[str, np.ndarray]:
                     raise ValueError(f"{path}: row {line}, column {name}: {text!r}; leave a "
                                      f"value that was not measured empty")  # fmt: skip
             rows.append(values)
+            lines.append(line)
     if not rows:
         raise ValueError(f"{path}: no rows after the header")
     table = np.array(rows, dtype=float)
-    return {name: table[:, i] for i, name in enumerate(names)}
+    return {name: table[:, i] for i, name in enumerate(names)}, np.array(lines)
+
+
+#: How the library names the first bad element of an array (``_validation.check``,
+#: ``fit_drops``): turned into the file's row by :func:`_rows`.
+_INDEX = re.compile(r" \(first offending index (\d+)\)| at index (\d+)")
+
+
+def _rows(path: str, lines: np.ndarray, exc: ValueError) -> ValueError:
+    """The library's error about the i-th data row, naming the row by its line in the file
+    (as the errors about a cell do) instead of by its index among the data rows."""
+    text = str(exc)
+    found = _INDEX.search(text)
+    if found is None:
+        return exc
+    line = int(lines[int(found.group(1) or found.group(2))])
+    return ValueError(f"{path}: row {line}: {text[: found.start()]}{text[found.end() :]}")
 
 
 def _knots(text: str) -> str | list[float]:
@@ -98,7 +130,7 @@ def _fixed(items: tuple[str, ...]) -> dict[str, float]:
     return out
 
 
-def _drops(columns: dict[str, np.ndarray], o: dict[str, Any]) -> Any:
+def _drops(columns: dict[str, np.ndarray], o: dict[str, Any], path: str, lines: np.ndarray) -> Any:
     from ..model.fit_drops import fit_drops
 
     for kind, (before, after) in DROP_COLUMNS.items():
@@ -111,7 +143,7 @@ def _drops(columns: dict[str, np.ndarray], o: dict[str, Any]) -> Any:
             for name in columns:
                 bad = np.flatnonzero(np.isnan(columns[name]))
                 if bad.size:
-                    raise ValueError(f"column {name} is empty at row {int(bad[0]) + 2}")
+                    raise ValueError(f"{path}: row {int(lines[bad[0]])}: column {name} is empty")
             sb, sa = columns.get(f"sigma_{before}"), columns.get(f"sigma_{after}")
             return fit_drops(columns[before], columns[after], heights=kind == "heights",
                              sigma_before=sb, sigma_after=sa, restitution=o["restitution"],
@@ -211,15 +243,17 @@ def fit_command(bounces: str, **o: Any) -> None:
     restitution = _knots(o["restitution"])
     o["restitution"] = restitution
     fixed = _fixed(o["fix"])
-    columns = read_columns(bounces)
+    columns, lines = read_table(bounces)
     from ..model.fit_result import FitWarning
 
     with warnings.catch_warnings():
         warnings.simplefilter("error", FitWarning)  # a fit that does not converge: an error
         try:
-            res = _drops(columns, o) if o["drops"] else _bounces(columns, o, fixed)
+            res = _drops(columns, o, bounces, lines) if o["drops"] else _bounces(columns, o, fixed)
         except FitWarning as exc:
             raise RuntimeError(str(exc)) from None
+        except ValueError as exc:  # name a bad row by its line in the file
+            raise _rows(bounces, lines, exc) from None
     if o["corner"] is not None and len(res.names) < 2:
         raise ValueError(f"--corner needs at least two fitted parameters, got {len(res.names)}")
     _print(res)

@@ -88,8 +88,12 @@ def fit_drops(
                          f"{b.shape} and {a.shape}")  # fmt: skip
     check(f"drop {what}", b, lambda x: x > 0, "> 0")
     check(f"rebound {what}", a, lambda x: x >= 0, ">= 0")
-    check(f"rebound {what}", a - b, lambda x: x <= 0,
-          f"<= the drop {what} (a ball cannot rebound higher than it fell)")  # fmt: skip
+    higher = np.flatnonzero(a > b)
+    if higher.size:
+        i = int(higher[0])
+        one = what[:-1]
+        raise ValueError(f"rebound {one} {float(a[i])!r} > drop {one} {float(b[i])!r} at "
+                         f"index {i} (a ball cannot rebound higher than it fell)")  # fmt: skip
     if (sigma_before is None) != (sigma_after is None):
         raise ValueError("give sigma_before and sigma_after together, or neither")
     v0 = np.sqrt(2 * g * b) if heights else b
