@@ -1,5 +1,6 @@
 """The tangential compliance options (``--tangential``, ``--beta0``, ``--poisson-ratio``,
-``--stiffness-ratio``) and the plain-text report of a :class:`~spinimpact.CompliantImpact`."""
+``--stiffness-ratio``) and the plain-text reports of a :class:`~spinimpact.CompliantImpact`
+and a :class:`~spinimpact.CompliantSphereImpact`."""
 
 from __future__ import annotations
 
@@ -7,10 +8,20 @@ from collections.abc import Callable
 from typing import Any
 
 import click
+import numpy as np
 
-from ..model.compliance import CompliantImpact, Stronge, TangentialLaw, Walton
+from ..model.compliance import (
+    CompliantImpact,
+    CompliantSphereImpact,
+    Stronge,
+    TangentialLaw,
+    Walton,
+)
 
-__all__ = ["tangential_options", "tangential_law", "print_compliant", "sweep_class"]
+__all__ = [
+    "tangential_options", "tangential_law", "print_compliant", "print_compliant_sphere",
+    "sweep_class",
+]  # fmt: skip
 
 
 def tangential_options(function: Callable) -> Callable:
@@ -92,6 +103,41 @@ def print_compliant(imp: CompliantImpact) -> None:
         ("slip u before, after (m/s)", f"{imp.slip_before:.6g}, {imp.slip_after:.6g}"),
         ("friction impulse f1 (N s)", f"{imp.tangential_impulse:.6g}"),
         ("dissipated energy (J)", f"{imp.dissipated_energy:.6g} "
+                                  f"({100 * float(imp.dissipated_fraction):.4g} %)"),
+    ]  # fmt: skip
+    width = max(len(k) for k, _ in rows)
+    for key, value in rows:
+        click.echo(f"{key:<{width}}  {value}")
+
+
+def print_compliant_sphere(imp: CompliantSphereImpact) -> None:
+    """A plain-text report of a sphere's impact in 3D under a tangential compliance law
+    (vectors ``x, y, z`` in the ground's frame)."""
+
+    def xyz(*parts: Any) -> str:
+        return ", ".join(f"{float(x) + 0.0:.6g}" for x in parts)  # + 0.0: no "-0"
+
+    b, a, slip0, slip1, f = (
+        imp.before,
+        imp.after,
+        imp.slip_before,
+        imp.slip_after,
+        imp.friction_impulse,
+    )
+    rows = [
+        ("law", repr(imp.law)),
+        ("regime", str(imp.regime)),
+        ("beta = -|c_t+|/|c_t-| (signed)", xyz(imp.tangential_restitution)),
+        ("before velocity (m/s)", xyz(*b.velocity)),
+        ("before spin (rad/s)", xyz(*b.spin)),
+        ("after velocity (m/s)", xyz(*a.velocity)),
+        ("after spin (rad/s)", xyz(*a.spin)),
+        ("contact-point slip before (m/s)", xyz(slip0.x, slip0.y, slip0.z)),
+        ("contact-point slip after (m/s)", xyz(slip1.x, slip1.y, slip1.z)),
+        ("friction impulse F (N s)", xyz(f.x, f.y, f.z)),
+        ("rebound speed (m/s), angle (deg)",
+         xyz(imp.rebound_speed, np.degrees(imp.rebound_angle))),
+        ("dissipated energy (J)", f"{float(imp.dissipated_energy):.6g} "
                                   f"({100 * float(imp.dissipated_fraction):.4g} %)"),
     ]  # fmt: skip
     width = max(len(k) for k, _ in rows)

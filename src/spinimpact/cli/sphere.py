@@ -13,7 +13,6 @@ two balls the "surface" is a horizontal table (``y`` up).
 
 from __future__ import annotations
 
-import json
 import math
 from pathlib import Path
 from typing import Any
@@ -22,9 +21,11 @@ import click
 import numpy as np
 
 from ..model.body import Body
-from ..model.pair import PairImpact, solve_pair
-from ..model.sphere3d import SphereImpact, Surface, solve_sphere
-from ._common import DEFAULTS, _options, float_option, image_format, jsonable, progress
+from ..model.pair import solve_pair
+from ..model.sphere3d import Surface, solve_sphere
+from ._common import DEFAULTS, _options, float_option, image_format, progress
+from ._compliance import tangential_law, tangential_options
+from ._sphere_report import report
 
 __all__ = ["sphere_command", "pair_command", "surface_frame", "incidence", "spin_vector"]
 
@@ -178,52 +179,6 @@ def _check_targets(o: dict) -> None:
             raise click.UsageError(f"{option}: no such directory {str(Path(path).parent)!r}")
 
 
-def print_sphere_report(imp: SphereImpact | PairImpact) -> None:
-    """The terminal report: the headline, then the tables of
-    :func:`~spinimpact.viz.sphere.sphere_tables` (Rich)."""
-    from rich.console import Console
-    from rich.text import Text
-
-    from ..viz.report import _rich
-    from ..viz.sphere import headline, sphere_tables
-
-    console = Console(highlight=False, soft_wrap=True)
-    pair = isinstance(imp, PairImpact)
-    title = f"Two spheres: {imp.ball1.name} on {imp.ball2.name}" if pair else (
-        f"Sphere on a surface, in 3D: {imp.body.name}")  # fmt: skip
-    console.print(Text(title, style="bold"))
-    console.print(Text.assemble("Regime: ", (str(imp.regime), "bold"), "   ", headline(imp)))
-    for table in sphere_tables(imp):
-        console.print()
-        console.print(_rich(table))
-
-
-def _report(imp: Any, as_json: bool, plot: str | None, html_path: str | None, dpi: int) -> None:
-    """Print the report (or JSON) and write the figure and the page, each atomically."""
-    if as_json:
-        click.echo(json.dumps(jsonable(imp.to_dict()), indent=2))
-    else:
-        print_sphere_report(imp)
-    if plot is None and html_path is None:
-        return
-    from ..io import atomic_path
-
-    if plot is not None:
-        from ..viz.sphere import plot_sphere
-
-        with atomic_path(plot) as tmp:
-            plot_sphere(imp).savefig(tmp, format=image_format(plot, "--plot"), dpi=dpi)
-    if html_path is not None:
-        from ..viz.sphere_html import sphere_report_html
-
-        with atomic_path(html_path) as tmp:
-            tmp.write_text(sphere_report_html(imp), encoding="utf-8")
-    if not as_json:
-        for path in (plot, html_path):
-            if path is not None:
-                click.echo(f"wrote {path}")
-
-
 def _batch(ctx: click.Context, pair: bool, o: dict, single: tuple[str, ...]) -> None:
     """``--batch SOURCE --output OUT``: every row of a file, through run_sphere_batch."""
     from ..io.sphere_batch import run_sphere_batch
@@ -317,6 +272,7 @@ _SPHERE_SINGLE = ("velocity", "spin", "speed", "angle_deg", "direction_deg", "rp
 @_vector("normal", "Outward normal of the surface (normalised).", (0.0, 1.0, 0.0))
 @_vector("surface_velocity", "Velocity of the surface (racket, belt), m/s.", (0.0, 0.0, 0.0))
 @_common_options
+@tangential_options
 @click.pass_context
 def sphere_command(ctx: click.Context, **o: Any) -> None:
     """A spinning sphere on a plane in 3D: x along the surface, y up, z = x cross y.
@@ -329,15 +285,23 @@ def sphere_command(ctx: click.Context, **o: Any) -> None:
     --batch FILE --output OUT: columns vx,vy,vz,wx,wy,wz, optionally mu, kappa, mass,
       radius, gyration, body, normal_x..z, surface_velocity_x..z (pairs of balls:
       spinimpact pair --batch).
+    --tangential walton|stronge: the contact point's tangential restitution of Walton's or
+      Stronge's law along the slip (docs/compliance.md); a plain report or --json.
     """
+    law = tangential_law(o)
+    rigid_only = [n for n, k in (("--batch", "batch"), ("--plot", "plot"),
+                                 ("--html", "html_path")) if o[k] is not None]  # fmt: skip
+    if law is not None and rigid_only:
+        raise click.UsageError(f"{rigid_only[0]} takes the rigid law only, not --tangential "
+                               f"{law.name}")  # fmt: skip
     if o["batch"] is not None:
         return _batch(ctx, False, o, _SPHERE_SINGLE)
     _check_targets(o)
     body = _body(o)
     v, w = _state(ctx, o, "", o["normal"], o["surface_velocity"])
     surface = Surface(normal=o["normal"], velocity=o["surface_velocity"])
-    imp = solve_sphere(body, v, w, mu=o["mu"], kappa=o["kappa"], surface=surface)
-    _report(imp, o["as_json"], o["plot"], o["html_path"], o["dpi"])
+    imp = solve_sphere(body, v, w, mu=o["mu"], kappa=o["kappa"], surface=surface, tangential=law)
+    report(imp, o["as_json"], o["plot"], o["html_path"], o["dpi"])
 
 
 def _pair_ball(k: str) -> Any:
@@ -396,4 +360,4 @@ def pair_command(ctx: click.Context, **o: Any) -> None:
         velocity2=states[1][0], spin2=states[1][1], mu=o["mu"], kappa=o["kappa"],
         normal=normal, centres=None if centres[0] is None else centres,
     )  # fmt: skip
-    _report(imp, o["as_json"], o["plot"], o["html_path"], o["dpi"])
+    report(imp, o["as_json"], o["plot"], o["html_path"], o["dpi"])
