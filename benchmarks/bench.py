@@ -4,7 +4,9 @@ Run with `make bench` (or `.venv/bin/python -m benchmarks.bench [--n N]` from th
 repository root, so that ``tests.reference`` imports without editing ``sys.path``).
 Every figure is a ratio against a baseline measured in the same run on the
 same machine: the memory-copy bound for the fused kernel, and the fused
-kernel's time per impact for everything else.
+kernel's time per impact for everything else; at the end, ``solve()`` with every field
+against copies of its bytes and ``spinimpact batch`` against Arrow's reading and writing
+(:mod:`benchmarks.limits`).
 """
 
 from __future__ import annotations
