@@ -85,6 +85,9 @@ def test_drop_tests(tmp_path, capsys):
     main(["fit", str(src), "--drops"])
     out = capsys.readouterr().out
     assert "kappa" in out and "mu" not in out.split("kappa")[0].split("\n")[-1]
+    assert "fit: drop tests" in out and "3 drops," in out
+    assert not any(line.strip("│┃ ").startswith("mu ") for line in out.splitlines())
+    assert "bounces" not in out and "rigid" not in out
 
 
 def run_main(capsys, *args):

@@ -68,3 +68,37 @@ def test_the_height_error_becomes_the_speed_error():
 def test_bad_drop_tests_are_refused(args, kwargs, match):
     with pytest.raises(ValueError, match=match):
         fit_drops(*args, **kwargs)
+
+
+def test_the_drop_fit_is_the_fit_of_the_drops_alone_with_its_kappa_curve():
+    """The unmeasured curve points change nothing: estimates, intervals, chi2 and the
+    per-drop arrays equal those of fit() on the drops as bounces; the curve is the fitted
+    law, its band holds it and meets fitted_low/high at the drops' speeds."""
+    from spinimpact import Body, MeasuredBounces, fit
+
+    h1 = rebound_heights(noise=2e-3, seed=4)
+    res = fit_drops(H0, h1, sigma_before=1e-3, sigma_after=2e-3, restitution="power")
+    v1 = np.sqrt(2 * G * h1)
+    s = np.hypot(G * 2e-3 / v1, (v1 / V0) * G * 1e-3 / V0)
+    zeros = np.zeros_like(V0)
+    plain = fit(MeasuredBounces(zeros, -V0, zeros, after_vy=v1, sigma_after_vx=1.0,
+                                sigma_after_vy=s, sigma_after_omega=1.0),
+                Body.solid_sphere(mass=1.0, radius=1.0), restitution="power",
+                fixed={"mu": 0.0})  # fmt: skip
+    for name in ("estimate", "interval_low", "interval_high", "fitted", "fitted_low",
+                 "fitted_high", "sigma", "observed"):  # fmt: skip
+        np.testing.assert_allclose(getattr(res, name), getattr(plain, name), rtol=1e-7,
+                                   atol=1e-12, equal_nan=True, err_msg=name)  # fmt: skip
+    assert (res.chi2, res.dof, res.n_bounces) == pytest.approx((plain.chi2, plain.dof, 10))
+    assert res.fixed == {} and "mu" not in repr(res) and res.model.startswith("drop tests")
+    np.testing.assert_allclose(res.kappa, v1 / V0)
+    np.testing.assert_allclose(res.sigma_kappa, s / V0)
+    ref = np.exp(np.mean(np.log(V0)))
+    k_ref, exponent = res.estimate
+    np.testing.assert_allclose(res.curve_kappa, k_ref * (res.curve_speed / ref) ** exponent)
+    assert res.curve_speed.min() < V0.min() and res.curve_speed.max() > V0.max()
+    assert np.all(res.curve_kappa_low <= res.curve_kappa + 1e-12)
+    assert np.all(res.curve_kappa_high >= res.curve_kappa - 1e-12)
+    assert np.all(res.curve_kappa_high - res.curve_kappa_low > 0)
+    low = np.interp(V0, res.curve_speed, res.curve_kappa_low)
+    np.testing.assert_allclose(low, res.fitted_low[:, 1] / V0, rtol=2e-3)

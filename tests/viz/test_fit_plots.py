@@ -74,3 +74,26 @@ def test_corner_plot_of_a_friction_the_data_only_bound():
     assert shown.max() <= 3.0 * max(res["mu"].low, res["mu"].estimate)  # not out to 1e6
     assert any("flat" in t.get_text() for t in fig.axes[0].texts)
     assert res["mu"].low in [ln.get_xdata()[0] for ln in fig.axes[3].lines]  # dashed bound
+
+
+def test_drop_tests_are_drawn_over_the_impact_speed_with_the_kappa_curve():
+    from spinimpact.model.fit_drops import fit_drops
+
+    res = fit_drops([2.0, 1.0, 0.5, 0.25], [1.25, 0.66, 0.35, 0.185], sigma_before=0.002,
+                    sigma_after=0.005, restitution="power")  # fmt: skip
+    fig = plot_fit(res)
+    top, bottom = fig.axes[:2]
+    assert len(fig.axes) == 2 and bottom.get_xlabel() == "impact speed (m/s)"
+    (bars,) = top.containers
+    np.testing.assert_allclose(bars.lines[0].get_xdata(), res.impact_speed)
+    np.testing.assert_allclose(bars.lines[0].get_ydata(), res.rebound_speed / res.impact_speed)
+    fitted = [ln for ln in top.lines if ln.get_label() == "fitted"][0]
+    np.testing.assert_allclose(fitted.get_xdata(), res.curve_speed)
+    np.testing.assert_allclose(fitted.get_ydata(), res.curve_kappa)
+    np.testing.assert_allclose(bottom.lines[-1].get_xdata(), res.impact_speed)
+    labels = {t.get_text() for t in fig.legends[0].get_texts()}
+    assert labels == {"band", "fitted", "measured"}  # no slid / stuck: nothing slides
+    title = fig._suptitle.get_text()
+    assert title.startswith("drop tests") and "\\mu" not in title
+    xmin, xmax = top.get_xlim()
+    assert xmin > 1.0 and xmax < 8.0  # the impact speeds (2.2 to 6.3 m/s), not 0 +- 0.04

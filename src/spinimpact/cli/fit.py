@@ -170,7 +170,10 @@ def _print(res: Any) -> None:
         table.add_row(Text(name), f"{value:.5g}", "fixed", "")
     console.print(table)
     sig = "sigmas given" if res.sigma_given else f"one sigma estimated: {res.scale:.3g} m/s"
-    console.print(Text(f"{res.n_bounces} bounces, {res.n_observations} measured values, "
+    from ..model.fit_drops import DropFit
+
+    what = "drops" if isinstance(res, DropFit) else "bounces"
+    console.print(Text(f"{res.n_bounces} {what}, {res.n_observations} measured values, "
                        f"{res.dof} degrees of freedom ({sig})"))  # fmt: skip
     if res.sigma_given:
         note = ""

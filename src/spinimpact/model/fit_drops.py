@@ -4,6 +4,7 @@ speeds, with uncertainties (:func:`fit_drops`)."""
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
@@ -15,7 +16,50 @@ from .fit_data import MeasuredBounces
 from .fit_result import FitResult
 from .restitution import STANDARD_GRAVITY
 
-__all__ = ["fit_drops"]
+__all__ = ["fit_drops", "DropFit"]
+
+#: Speeds at which the fitted ``kappa(v)`` and its band are drawn.
+CURVE_POINTS = 81
+
+
+@dataclass(frozen=True, eq=False, repr=False)
+class DropFit(FitResult):
+    """A :class:`~spinimpact.model.fit_result.FitResult` of drop tests
+    (:func:`fit_drops`), with the drops in their own terms and the fitted ``kappa(v)``.
+
+    Attributes
+    ----------
+    impact_speed, rebound_speed : ndarray
+        ``(n,)``: each drop's impact and rebound speed, m/s.
+    sigma_rebound_speed : ndarray
+        ``(n,)``: the rebound speed's standard deviation used in the fit (the impact
+        speed's added in quadrature, see :func:`fit_drops`), m/s; the common estimate
+        when no sigmas were given.
+    curve_speed : ndarray
+        ``(m,)``: impact speeds spanning the drops', m/s.
+    curve_kappa, curve_kappa_low, curve_kappa_high : ndarray
+        ``(m,)``: the fitted ``kappa`` at ``curve_speed`` and its band, the least and
+        greatest ``kappa`` over the ends of every profile interval (as ``fitted_low``
+        and ``fitted_high``).
+    """
+
+    impact_speed: Any
+    rebound_speed: Any
+    sigma_rebound_speed: Any
+    curve_speed: Any
+    curve_kappa: Any
+    curve_kappa_low: Any
+    curve_kappa_high: Any
+
+    @property
+    def kappa(self) -> np.ndarray:
+        """Measured ``kappa = rebound_speed / impact_speed`` of each drop."""
+        return self.rebound_speed / self.impact_speed
+
+    @property
+    def sigma_kappa(self) -> np.ndarray:
+        """Standard deviation of :attr:`kappa`, ``sigma_rebound_speed / impact_speed``."""
+        return self.sigma_rebound_speed / self.impact_speed
 
 
 def _sigma(name: str, value: Any, shape: tuple[int, ...]) -> np.ndarray:
@@ -34,7 +78,7 @@ def fit_drops(
     restitution: str | Sequence[float] = "constant",
     gravity: float = STANDARD_GRAVITY,
     confidence: float = 0.95,
-) -> FitResult:
+) -> DropFit:
     r"""Fit ``kappa(|v|)`` to vertical drop tests without spin.
 
     Parameters
@@ -56,9 +100,11 @@ def fit_drops(
 
     Returns
     -------
-    FitResult
-        With the restitution parameters only (``mu`` plays no part in a drop without
-        spin and is held at 0).
+    DropFit
+        A :class:`~spinimpact.model.fit_result.FitResult` with the restitution
+        parameters only (``mu`` plays no part in a drop without spin: it is held at 0
+        and not reported), the drops' speeds and the fitted ``kappa(v)`` with its band
+        over their range.
 
     Notes
     -----
@@ -109,7 +155,40 @@ def fit_drops(
             s1 = np.where(v1 > 0, g * s1 / np.maximum(v1, 1e-300), np.sqrt(2 * g * s1))
         s = np.hypot(s1, (v1 / v0) * s0)
         sig = {"sigma_after_vx": 1.0, "sigma_after_vy": s, "sigma_after_omega": 1.0}
-    zeros = np.zeros_like(v0)
-    data = MeasuredBounces(zeros, -v0, zeros, after_vy=v1, **sig)
+    return _fit(v0, v1, sig, restitution, confidence)
+
+
+def _fit(v0: np.ndarray, v1: np.ndarray, sig: dict[str, Any], restitution: Any,
+         confidence: float) -> DropFit:  # fmt: skip
+    """The drops and, unmeasured (no part of chi2), drops at the speeds of the curve: the
+    fit predicts them and their band as it does the measured ones."""
+    n = v0.size
+    low, high = float(v0.min()), float(v0.max())
+    grid = np.geomspace(0.95 * low, 1.05 * high, CURVE_POINTS)
+    speed = np.concatenate([v0, grid])
+    after = np.concatenate([v1, np.full(grid.size, np.nan)])
+    ones = np.ones(grid.size)
+    sig = {k: np.concatenate([np.broadcast_to(v, v0.shape), ones]) for k, v in sig.items()}
+    zeros = np.zeros_like(speed)
+    data = MeasuredBounces(zeros, -speed, zeros, after_vy=after, **sig)
     body = Body.solid_sphere(mass=1.0, radius=1.0)  # drops without spin: the body plays no part
-    return fit(data, body, restitution=restitution, fixed={"mu": 0.0}, confidence=confidence)
+    ref = float(np.exp(np.mean(np.log(v0))))  # the power law's v_ref from the drops alone
+    res = fit(data, body, restitution=restitution, fixed={"mu": 0.0}, confidence=confidence,
+              reference_speed=ref)  # fmt: skip
+    values = {f.name: getattr(res, f.name) for f in fields(FitResult)}
+    for name, v in values.items():  # the measured drops' rows only
+        if isinstance(v, np.ndarray) and v.shape[:1] == (n + grid.size,):
+            values[name] = v[:n]
+    values.update(
+        model=res.model.replace("rigid, ", "drop tests, ").replace("|vy|", "|v|"),
+        fixed={},  # mu plays no part in a drop without spin
+        n_bounces=n,
+        impact_speed=v0,
+        rebound_speed=v1,
+        sigma_rebound_speed=res.sigma[:n, 1],
+        curve_speed=grid,
+        curve_kappa=res.fitted[n:, 1] / grid,
+        curve_kappa_low=res.fitted_low[n:, 1] / grid,
+        curve_kappa_high=res.fitted_high[n:, 1] / grid,
+    )
+    return DropFit(**values)

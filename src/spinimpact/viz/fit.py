@@ -7,7 +7,7 @@ Nothing here fits or solves: every number drawn is a field of the
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -64,7 +64,10 @@ def plot_fit(res: FitResult) -> Figure:
         mark per bounce with its band as a bar.
     """
     from ..model.fit_data import QUANTITIES
+    from ..model.fit_drops import DropFit
 
+    if isinstance(res, DropFit):
+        return _plot_drops(res)
     shown = [j for j in range(3) if np.isfinite(res.observed[:, j]).any()]
     fig = _figure(figsize=(4.2 * len(shown), 6.2))
     axes = fig.subplots(2, len(shown), squeeze=False, sharex="col")
@@ -105,6 +108,31 @@ def plot_fit(res: FitResult) -> Figure:
     return fig
 
 
+def _plot_drops(res: Any) -> Figure:
+    """Drop tests: measured ``kappa`` against the impact speed with the fitted
+    ``kappa(v)`` and its band (top), the normalized residuals (bottom)."""
+    fig = _figure(figsize=(6.4, 6.2))
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.fill_between(res.curve_speed, res.curve_kappa_low, res.curve_kappa_high,
+                     color="tab:orange", alpha=0.3, lw=0, label="band")  # fmt: skip
+    top.plot(res.curve_speed, res.curve_kappa, "-", color="tab:orange", lw=1.2, label="fitted")
+    top.errorbar(res.impact_speed, res.kappa, yerr=res.sigma_kappa, fmt="o", ms=4,
+                 color="tab:blue", elinewidth=0.8, capsize=2, label="measured")  # fmt: skip
+    top.set_ylabel(r"$\kappa$ = rebound speed / impact speed")
+    top.set_title("measured and fitted", fontsize="medium")
+    bottom.axhline(0.0, color="0.3", lw=0.8)
+    for y in (-2.0, 2.0):
+        bottom.axhline(y, color="0.6", lw=0.8, ls="--")
+    bottom.plot(res.impact_speed, res.normalized_residuals[:, 1], "o", ms=4, color="tab:blue")
+    bottom.set_xlabel("impact speed (m/s)")
+    bottom.set_ylabel(r"(measured $-$ fitted)/$\sigma$")
+    handles, labels = top.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=len(labels), fontsize="small",
+               frameon=False)  # fmt: skip
+    fig.suptitle(_title(res), fontsize="medium")
+    return fig
+
+
 def _one_family(res: FitResult) -> bool:
     """Whether every bounce has one incidence speed and spin (only the angle varies)."""
     speed = np.hypot(res.incidence[:, 0], res.incidence[:, 1])
@@ -122,7 +150,7 @@ def _title(res: FitResult) -> str:
         else:
             parts.append(f"{symbol(n)} = {e.estimate:.3g} [{e.low:.3g}, {e.high:.3g}]")
     held = "".join(f"; {symbol(n)} = {v:.4g} held" for n, v in res.fixed.items())
-    return f"{res.model}: " + ", ".join(parts) + f" ({100 * res.confidence:g} %){held}"
+    return f"{res.model}\n" + ", ".join(parts) + f" ({100 * res.confidence:g} %){held}"
 
 
 def plot_corner(res: FitResult) -> Figure:
