@@ -24,25 +24,16 @@ from __future__ import annotations
 
 import argparse
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
 
+from benchmarks.bench import best as one_time
 from spinimpact import Body, solve
 from spinimpact.io.batch import run_batch
 
 BODY_COLUMNS = ("mass", "radius", "gyration", "zeta")  # the body's, not solve()'s, arrays
 DEFAULTS = dict(mu=0.3, kappa=0.8, mass=1.0, radius=0.1, body="solid-sphere")
-
-
-def _best(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        t = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t)
-    return min(times)
 
 
 def _interleaved(fns, repeat: int) -> list[float]:
@@ -51,7 +42,7 @@ def _interleaved(fns, repeat: int) -> list[float]:
     best = [float("inf")] * len(fns)
     for _ in range(repeat):
         for k, fn in enumerate(fns):
-            best[k] = min(best[k], _best(fn, 1))
+            best[k] = min(best[k], one_time(fn, 1))
     return best
 
 
