@@ -41,7 +41,7 @@ images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(PY) docs/scripts/flight.py docs/images
 
 validation: $(STAMP)  ## every model against Kharaz et al. (2001); the Chung & Ooi (2011) tests
-	$(PY) -m benchmarks.validation kharaz
+	$(PY) -m benchmarks.validation kharaz --output docs/images
 	for t in 1 2 3 4 5 6; do $(PY) -m benchmarks.validation chung-ooi --test $$t || exit 1; done
 
 lint: $(STAMP)

@@ -15,6 +15,8 @@ import math
 from dataclasses import dataclass
 
 from spinimpact import Body
+from spinimpact.core.compliance import maw_angles
+from spinimpact.core.tangential import mindlin_stiffness_ratio
 from spinimpact.dynamics import HertzContact, HuntCrossleyContact, Mindlin, simulate
 
 from . import kharaz
@@ -146,6 +148,8 @@ class ObliqueCase:
 #: Test 5 (Kratos's benchmark 5 and the PySPH script: vn = 5 m/s, R = 10 um, mu = 0.3, e = 1).
 TEST5 = (ObliqueCase("steel", 2.08e11, 0.30, 7850.0, 1e-5, 5.0, 0.3, 1.0),
          ObliqueCase("polyethylene", 1.0e9, 0.40, 1400.0, 1e-5, 5.0, 0.3, 1.0))  # fmt: skip
+#: Test 5's normalized incidence angles ``Psi_1 = r u-/(mu vn-)`` (Maw et al.'s, as in
+#: docs/validation.md: ``r = 2(1-nu)/(2-nu)``).
 TEST5_PSI = (0.5, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 10.0, 12.0, 14.0)
 #: Test 6 (Kratos's benchmark 6: vn = 0.2 m/s, R = 0.1 m, mu = 0.4, e = 0.5, pure backspin);
 #: the aluminium alloy of Test 4 (nylon is left out: its constants could not be confirmed).
@@ -153,33 +157,52 @@ TEST6 = (ObliqueCase("aluminium alloy", 7.0e10, 0.33, 2700.0, 0.1, 0.2, 0.4, 0.5
 TEST6_TAN = (0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0)
 
 
+def test5_threshold(case: ObliqueCase, zeta: float = 3.5) -> float:
+    """``Psi_1`` from which the rigid law slides throughout: ``r zeta (1 + e)`` (5.76 for
+    steel, 5.25 for polyethylene, a solid sphere with e = 1)."""
+    return float(mindlin_stiffness_ratio(case.poisson_ratio)) * zeta * (1 + case.kappa)
+
+
 def test5() -> list[str]:
-    """Test 5: normalized recoil ``u+/(mu vn+)`` and spin ``R omega+/(mu vn-)`` against the
-    normalized incidence ``u-/(mu vn-)``; reference: the rigid law, exact where the contact
-    slides throughout (``Psi >= 7`` for e = 1, a solid sphere)."""
-    lines = ["material         Psi  recoil(model)  recoil(rigid)  spin(model)  spin(rigid)"]
+    """Test 5: Maw et al.'s normalized recoil angle ``Psi_2 = r u+/(mu vn+)`` and the
+    normalized spin ``R omega+/(mu vn-)`` against the normalized incidence angle
+    ``Psi_1 = r u-/(mu vn-)``, ``r = 2(1-nu)/(2-nu)`` (the definition of
+    docs/validation.md and :func:`spinimpact.core.compliance.maw_angles`); reference: the
+    rigid law, exact where the contact slides throughout (``Psi_1 >= r zeta (1 + e)``,
+    :func:`test5_threshold`)."""
+    lines = ["Psi1 = r u-/(mu vn-), Psi2 = r u+/(mu vn+), r = 2(1-nu)/(2-nu); "
+             "spin = R w+/(mu vn-)",
+             f"{'material':15s} {'Psi1':>5s} {'Psi2(model)':>12s} {'Psi2(rigid)':>12s} "
+             f"{'spin(model)':>12s} {'spin(rigid)':>12s}"]  # fmt: skip
     zeta = 3.5
     for case in TEST5:
+        r = float(mindlin_stiffness_ratio(case.poisson_ratio))
         for psi in TEST5_PSI:
-            vn = case.normal_speed
-            sim = case.run(psi * case.mu * vn, 0.0)
+            vn, e, mu = case.normal_speed, case.kappa, case.mu
+            u0 = psi * mu * vn / r
+            sim = case.run(u0, 0.0)
             u1 = float(sim.after.vx + case.radius * sim.after.omega)
-            recoil = u1 / (case.mu * float(sim.after.vy))
-            spin = case.radius * float(sim.after.omega) / (case.mu * vn)
-            slides = psi >= zeta * (1 + case.kappa)
-            ref_recoil = (psi - zeta * (1 + case.kappa)) / case.kappa if slides else 0.0
-            ref_spin = -(zeta - 1) * (1 + case.kappa) if slides else -psi * (zeta - 1) / zeta
-            lines.append(f"{case.name:15s} {psi:5.1f} {recoil:14.4f} {ref_recoil:14.4f} "
+            recoil = float(maw_angles(u0, -vn, u1, float(sim.after.vy), mu,
+                                      case.poisson_ratio).recoil)  # fmt: skip
+            spin = case.radius * float(sim.after.omega) / (mu * vn)
+            if psi >= test5_threshold(case, zeta):  # u+ = u- - zeta mu (1 + e) vn, vn+ = e vn
+                ref_recoil, ref_spin = (psi - r * zeta * (1 + e)) / e, -(zeta - 1) * (1 + e)
+            else:  # sticks: u+ = 0, R omega+ = -(zeta - 1) u-/zeta
+                ref_recoil, ref_spin = 0.0, -(zeta - 1) / zeta * psi / r
+            lines.append(f"{case.name:15s} {psi:5.1f} {recoil:12.4f} {ref_recoil:12.4f} "
                          f"{spin:12.4f} {ref_spin:12.4f}")  # fmt: skip
     return lines
 
 
 def test6() -> list[str]:
     """Test 6: pure backspin (``vx- = 0``); ``beta = -u+/u-`` against
-    ``chi = zeta mu (1 + e) vn/u-`` and the recoil tangent ``u+/vn+`` against the incidence
-    tangent ``u-/vn-``; reference: the rigid law (``beta = chi - 1`` while sliding)."""
+    ``chi = zeta mu (1 + e) vn-/u-`` and the recoil tangent ``u+/vn+`` against the
+    incidence tangent ``u-/vn-`` (the contact point's, not normalized by ``mu`` or ``r``);
+    reference: the rigid law (``beta = chi - 1`` while sliding)."""
     lines = [
-        "material          tan_in    chi   beta(model) beta(rigid) tan_out(model) tan_out(rigid)"
+        "tangents u-/vn-, u+/vn+ (not normalized); chi = zeta mu (1+e) vn-/u-; beta = -u+/u-",
+        f"{'material':16s} {'u-/vn-':>7s} {'chi':>6s} {'beta(model)':>12s} {'beta(rigid)':>11s} "
+        f"{'u+/vn+(model)':>14s} {'u+/vn+(rigid)':>14s}",
     ]
     for case in TEST6:
         for tan_in in TEST6_TAN:

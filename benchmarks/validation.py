@@ -1,7 +1,8 @@
 """Validation cases, one command: ``python -m benchmarks.validation CASE``.
 
 * ``kharaz``: every model against Kharaz et al. (2001); prints the error table of
-  ``docs/validation.md`` and writes its figures (``--images DIR``, default docs/images).
+  ``docs/validation.md``, and writes its figures where ``--output DIR`` is given only
+  (``make validation`` gives docs/images), so a plain run leaves the tracked figures alone.
 * ``chung-ooi --test N``: Chung & Ooi (2011) Test N (1-6), the benchmark's quantities
   beside the reference.
 """
@@ -15,8 +16,6 @@ from pathlib import Path
 import numpy as np
 
 from . import chung_ooi, kharaz
-
-IMAGES = Path(__file__).resolve().parents[1] / "docs" / "images"
 
 
 def _available(models):
@@ -41,7 +40,9 @@ def kharaz_figure(models, path: Path) -> None:
     import matplotlib.pyplot as plt
 
     data = kharaz.measured()
-    angles = np.linspace(0.5, 85.0, 120)
+    measured = np.concatenate([a for a, _ in data.values()])
+    low, high = float(measured.min()), float(measured.max())  # the digitization's range
+    angles = np.linspace(low, high, 120)
     curves = [(label, model(angles, material)) for label, model, material in models]
     fig, axes = plt.subplots(1, 3, figsize=(15, 5.6), constrained_layout=True)
     titles = {"e_t": r"tangential restitution $e_t = v_x^+/v_x^-$",
@@ -53,6 +54,7 @@ def kharaz_figure(models, path: Path) -> None:
             ax.plot(angles, values[key], ls=style, lw=1.6, label=label)
         ax.plot(*data[key], "ko", ms=6, label="measured (Kharaz et al. 2001)")
         ax.set_xlabel("incidence angle from the normal (deg)")
+        ax.set_xlim(0.0, high + 2.0)
         ax.set_title(titles[key])
         ax.grid(alpha=0.3)
     handles, labels = axes[0].get_legend_handles_labels()
@@ -115,7 +117,12 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m benchmarks.validation")
     sub = parser.add_subparsers(dest="case", required=True)
     k = sub.add_parser("kharaz", help="every model against Kharaz et al. (2001)")
-    k.add_argument("--images", type=Path, default=IMAGES, help="where the figures go")
+    k.add_argument(
+        "--output",
+        type=Path,
+        default=None,
+        help="directory to write the figures into (none written without it)",
+    )
     c = sub.add_parser("chung-ooi", help="a Chung & Ooi (2011) benchmark test")
     c.add_argument("--test", type=int, required=True, choices=sorted(chung_ooi.TESTS))
     args = parser.parse_args(argv)
@@ -125,10 +132,12 @@ def main(argv=None) -> int:
         return 0
     models = _available(kharaz.MODELS)
     print(kharaz.markdown_table([(label, kharaz.errors(m, mat)) for label, m, mat in models]))
-    args.images.mkdir(parents=True, exist_ok=True)
-    kharaz_figure(models, args.images / "validation_kharaz.png")
-    mbf_figure(args.images / "validation_mbf.png")
-    print(f"wrote {args.images / 'validation_kharaz.png'} and validation_mbf.png")
+    if args.output is None:
+        return 0
+    args.output.mkdir(parents=True, exist_ok=True)
+    kharaz_figure(models, args.output / "validation_kharaz.png")
+    mbf_figure(args.output / "validation_mbf.png")
+    print(f"wrote {args.output / 'validation_kharaz.png'} and validation_mbf.png")
     return 0
 
 

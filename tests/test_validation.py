@@ -111,13 +111,29 @@ def test_chung_ooi_normal_tests_against_hertz_theory():
 
 
 def test_chung_ooi_tests_5_and_6_equal_the_rigid_law_where_it_slides():
-    lines = chung_ooi.test5()[1:]
+    """Test 5 uses Maw et al.'s Psi_1 = r u-/(mu vn-) of docs/validation.md (its header
+    says so): the rigid law slides throughout from Psi_1 = r zeta (1 + e), 5.76 for steel."""
+    header, columns, *lines = chung_ooi.test5()
+    assert "Psi1 = r u-/(mu vn-)" in header and "Psi2 = r u+/(mu vn+)" in header
+    assert columns.split()[1:] == ["Psi1", "Psi2(model)", "Psi2(rigid)", "spin(model)",
+                                   "spin(rigid)"]  # fmt: skip
+    steel, poly = chung_ooi.TEST5
+    assert chung_ooi.test5_threshold(steel) == pytest.approx(7 * 2 * 0.7 / 1.7)  # 5.765
+    assert round(chung_ooi.test5_threshold(steel), 2) == 5.76
+    assert "(`Psi_1 >= 5.76` for steel, 5.25 for polyethylene" in " ".join(DOC.split())
+    sliding = 0
     for line in lines:
-        psi, recoil, ref_recoil, spin, ref_spin = line.split()[-5:]
-        if float(psi) > 7:
-            assert float(recoil) == pytest.approx(float(ref_recoil), abs=1e-4)
-            assert float(spin) == pytest.approx(float(ref_spin), abs=1e-4)
-    for line in chung_ooi.test6()[1:]:
+        name = line[:15].strip()
+        case = steel if name == "steel" else poly
+        psi, recoil, ref_recoil, spin, ref_spin = (float(x) for x in line.split()[-5:])
+        if psi >= chung_ooi.test5_threshold(case):
+            sliding += 1
+            assert recoil == pytest.approx(ref_recoil, abs=1e-4)
+            assert spin == pytest.approx(ref_spin, abs=1e-4)
+    assert sliding == 12  # Psi_1 = 6, 7, 8, 10, 12, 14 for both materials
+    header, _, *lines = chung_ooi.test6()
+    assert "u-/vn-, u+/vn+ (not normalized)" in header
+    for line in lines:
         parts = line.split()
         chi, beta, ref_beta = (float(x) for x in parts[-5:-2])
         if chi < 1:
@@ -146,3 +162,20 @@ def test_energy_of_the_variants_as_stated():
         finals.append(_final_gain(tot))
     assert round(max(rises), 4) == 0.0002
     assert round(max(finals), 3) == 0.004
+
+
+def test_kharaz_writes_figures_only_into_an_output_directory(monkeypatch, tmp_path, capsys):
+    """A plain ``python -m benchmarks.validation kharaz`` prints the table and writes no
+    figure (the tracked docs/images stay as they are); ``--output DIR`` writes both there."""
+    from benchmarks import validation
+
+    written = []
+    monkeypatch.setattr(validation, "_available", lambda models: list(models[:1]))
+    monkeypatch.setattr(validation, "kharaz_figure", lambda models, path: written.append(path))
+    monkeypatch.setattr(validation, "mbf_figure", lambda path: written.append(path))
+    assert validation.main(["kharaz"]) == 0
+    assert written == [] and "| rigid |" in capsys.readouterr().out
+    assert validation.main(["kharaz", "--output", str(tmp_path / "figs")]) == 0
+    assert written == [tmp_path / "figs" / "validation_kharaz.png",
+                       tmp_path / "figs" / "validation_mbf.png"]  # fmt: skip
+    assert "kharaz --output docs/images" in (Path(__file__).parents[1] / "Makefile").read_text()
