@@ -38,7 +38,7 @@ from .model.planar import (
     solve_planar,
 )
 from .model.planar_body import Pendulum, PlanarBody
-from .model.presets import BALLS, GROUNDS, Ball, Ground
+from .model.presets import BALLS, GROUNDS, Ball, Ground, Wall
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
@@ -55,6 +55,7 @@ __all__ = [
     "Flight",
     "Ball",
     "Ground",
+    "Wall",
     "BALLS",
     "GROUNDS",
     "solve_pair",
