@@ -2,6 +2,8 @@
 to the planar solve in a vertical plane) without air, many balls in chunks, the result's
 shape and columns, and bad input."""
 
+import re
+
 import numpy as np
 import pytest
 
@@ -137,10 +139,34 @@ def test_a_ball_that_settles_slides_and_rolls_to_rest_where_friction_says():
         (dict(speed=10.0, angle=0.0, height=0.01), ValueError, "start on or above the ground"),
         (dict(speed=10.0, angle=95.0), ValueError, "angle must be in"),
         (dict(speed="fast", angle=0.0), TypeError, "speed must be a real number"),
-        (dict(speed=10.0, angle=0.0, dt=0.0), ValueError, "dt"),
+        (dict(speed=10.0, angle=0.0, dt=0.0), ValueError, re.escape("dt must be > 0 (s), got 0.0")),
+        (dict(speed=10.0, angle=0.0, dt=-1), ValueError, re.escape("dt must be > 0 (s), got -1.0")),
+        (dict(speed=10.0, angle=0.0, dt=np.inf), ValueError, "dt must be a finite real number"),
         (dict(speed=10.0, angle=0.0, max_bounces=0), ValueError, "max_bounces"),
-        (dict(speed=10.0, angle=0.0, t_stop=-1.0), ValueError, "t_stop"),
-        (dict(speed=10.0), ValueError, "give speed and angle"),
+        (dict(speed=10.0, angle=0.0, t_stop=-1.0), ValueError, re.escape("t_stop must be > 0 (s)")),
+        (dict(speed=10.0, angle=0.0, air_density=-1.0), ValueError,
+         re.escape("air_density must be >= 0 (kg/m^3), got -1.0")),
+        (dict(speed=10.0, angle=0.0, gravity=0), ValueError,
+         re.escape("gravity must be > 0 (m/s^2), got 0.0")),
+        (dict(speed=10.0, angle=0.0, gravity=-9.8), ValueError, "gravity must be > 0"),
+        (dict(speed=10.0, angle=0.0, settle_speed=-1), ValueError,
+         re.escape("settle_speed must be > 0 (m/s), got -1.0")),
+        (dict(speed=10.0, angle=0.0, dt="1"), TypeError, "dt must be a finite real number"),
+        (dict(speed=10.0), ValueError, "^angle missing: give speed"),
+        (dict(angle=10.0), ValueError, "^speed missing: give speed"),
+        (dict(), ValueError, "^speed and angle missing"),
+        (dict(speed=[1, 2, 3], angle=0.0, spin_rpm=[1, 2]), ValueError,
+         re.escape("speed (3,), angle (), direction (), spin_rpm (2,)")),
+        (dict(speed=[1, 2, 3], angle=[0.0, 1.0]), ValueError, re.escape("speed (3,), angle (2,)")),
+        (dict(speed=[1, 2, 3], angle=0.0, spin_axis=[[0, 0, 1]] * 2), ValueError,
+         re.escape("spin_axis of shape (2, 3) (vectors along the last axis) does not broadcast "
+                   "with the shape (3,) of speed")),
+        (dict(speed=[1, 2, 3], angle=0.0, height=[1, 2]), ValueError,
+         re.escape("speed, angle, direction and spin_rpm (3,), height (2,)")),
+        (dict(velocity=[[1, 0, 0]] * 3, spin=[[0, 0, 1]] * 2), ValueError,
+         re.escape("velocity (3,), spin (2,), height ()")),
+        (dict(velocity=[[1, 0, 0]] * 3, position=[[0, 1, 0]] * 2), ValueError,
+         re.escape("velocity (3,), spin (), position (2,)")),
         (dict(speed=10.0, angle=0.0, velocity=[1, 0, 0]), ValueError, "not both"),
         (dict(velocity=[1, 0, 0], spin=[0, 0]), ValueError, "spin must be a 3-vector"),
     ],

@@ -23,11 +23,12 @@ from typing import Any
 
 import numpy as np
 
-from .._validation import as_real_array, check, setting, vector3, whole
+from .._validation import as_real_array, broadcast, check, setting, vector3, whole
 from ..core import impulse
 from ..core.aero import aero_constants
 from ..core.bounces import STOPS, assemble_path, fly
 from ..core.compliance import COMPLIANT_REGIMES
+from ..core.flight import STEP_FRACTION, air_time_scales
 from ._hooks import tangential_law
 from .flight_result import Bounces, Flight
 from .presets import Ball, Ground, Wall
@@ -81,6 +82,7 @@ def launch(speed: Any, angle: Any, direction: Any = 0.0, spin_rpm: Any = 0.0,
     check("angle", a, lambda x: np.abs(x) <= 90, "in [-90, 90] (degrees above the ground)")
     d = np.radians(as_real_array("direction", direction))
     rpm = as_real_array("spin_rpm", spin_rpm)
+    s, a, d, rpm = broadcast(speed=s, angle=a, direction=d, spin_rpm=rpm)
     a = np.radians(a)
     heading = np.stack([np.cos(d), np.zeros_like(d), -np.sin(d)], axis=-1)
     up = np.array([0.0, 1.0, 0.0])
@@ -96,6 +98,12 @@ def launch(speed: Any, angle: Any, direction: Any = 0.0, spin_rpm: Any = 0.0,
             axis = np.cross(up, heading) * (1.0 if name == "topspin" else -1.0)
     else:
         axis = vector3("spin_axis", spin_axis)
+        try:
+            np.broadcast_shapes(axis.shape[:-1], s.shape)
+        except ValueError:
+            raise ValueError(f"spin_axis of shape {axis.shape} (vectors along the last axis) "
+                             f"does not broadcast with the shape {s.shape} of speed, angle, "
+                             "direction and spin_rpm") from None  # fmt: skip
         length = np.sqrt(np.sum(axis * axis, axis=-1))
         check("the length of spin_axis", length, lambda x: x > 1e-12, "> 0 (a direction)")
         axis = axis / length[..., None]
@@ -141,7 +149,9 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         (its rolling resistance is the ground's ``rolling``).
     dt : float
         Step of the fourth-order Runge-Kutta integrator, s (impacts are located within a
-        step to the integrator's precision).
+        step to the integrator's precision); at most
+        :data:`~spinimpact.core.flight.STEP_FRACTION` of the shortest time scale of the air
+        (:func:`~spinimpact.core.flight.air_time_scales`), unused without air.
     chunk : int
         Balls solved together: memory is bounded by the chunk.
     path : bool, optional
@@ -165,7 +175,9 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
     ------
     TypeError, ValueError
         Bad input, named: a negative speed, a spin axis of length zero, a ball that starts
-        below the ground, a step or stopping time that is not positive, ...
+        below the ground, a step or stopping time that is not positive, a step too large
+        for the flight (the message names the limit), inputs whose shapes do not broadcast
+        (the message names them and their shapes), ...
 
     Examples
     --------
@@ -180,8 +192,10 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
     law = None if tangential is None else tangential_law(tangential)
     radius = ball_.radius
     if velocity is None:
-        if speed is None or angle is None:
-            raise ValueError("give speed and angle (or velocity as a vector)")
+        missing = [k for k, x in (("speed", speed), ("angle", angle)) if x is None]
+        if missing:
+            raise ValueError(f"{' and '.join(missing)} missing: give speed (m/s) and angle "
+                             "(degrees above the ground), or velocity as a vector")  # fmt: skip
         v, w0 = launch(speed, angle, direction, spin_rpm, spin_axis)
         if spin is not None:
             raise ValueError("give spin as a vector with velocity, or spin_rpm and spin_axis")
@@ -205,13 +219,16 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         gap = p @ wall.normal - plane[1]
         check("the launch point's distance from the wall less the ball's radius", gap,
               lambda x: x >= 0, ">= 0 (the ball must start in front of the wall)")  # fmt: skip
-    shape = np.broadcast_shapes(v.shape[:-1], w0.shape[:-1], p.shape[:-1])
-    v, w0, p = (np.broadcast_to(a, (*shape, 3)).reshape(-1, 3) for a in (v, w0, p))
-    density = setting("air_density", air_density, low=0.0, closed=True)
-    g = setting("gravity", gravity, low=0.0)
-    t_stop = setting("t_stop", t_stop, low=0.0)
-    settle = setting("settle_speed", settle_speed, low=0.0)
-    dt = setting("dt", dt, low=0.0)
+    named = {"speed, angle, direction and spin_rpm": v} if velocity is None else {
+        "velocity": v, "spin": w0}  # fmt: skip
+    named["height" if position is None else "position"] = p
+    shape = broadcast(**{k: x[..., 0] for k, x in named.items()})[0].shape
+    v, w0, p = (np.broadcast_to(x, (*shape, 3)).reshape(-1, 3) for x in (v, w0, p))
+    density = _number("air_density", air_density, "kg/m^3", closed=True)
+    g = _number("gravity", gravity, "m/s^2")
+    t_stop = _number("t_stop", t_stop, "s")
+    settle = _number("settle_speed", settle_speed, "m/s")
+    dt = _number("dt", dt, "s")
     nb = whole("max_bounces", max_bounces, 1)
     chunk = whole("chunk", chunk, 1)
     n = len(v)
@@ -222,6 +239,7 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         drag_coefficient=ball_.drag_coefficient, lift_slope=ball_.lift_slope,
         lift_max=ball_.lift_max, spin_decay=ball_.spin_decay, gravity=g,
     )  # fmt: skip
+    _check_step(dt, aero, p, v, w0, ball_)
     slip_law = None if law is None else law.rebound_slip
     parts = []
     for start in range(0, n, chunk):
@@ -236,6 +254,31 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         if progress is not None:
             progress(sl.stop, n)
     return _package(ball_, ground_, law, wall, p, v, w0, parts, shape, record)
+
+
+def _number(name: str, value: Any, unit: str, closed: bool = False) -> float:
+    """A finite real setting ``> 0`` (``>= 0`` when ``closed``), the sign said in the error."""
+    finite = setting(name, value)
+    return setting(name, finite, low=0.0, closed=closed, rule=f"{'>=' if closed else '>'} 0 "
+                   f"({unit})")  # fmt: skip
+
+
+def _check_step(dt: float, aero: Any, p: np.ndarray, v: np.ndarray, w: np.ndarray,
+                ball_: Ball) -> None:  # fmt: skip
+    """Refuse a step larger than :data:`~spinimpact.core.flight.STEP_FRACTION` of the
+    shortest time scale of the air (:func:`~spinimpact.core.flight.air_time_scales`)."""
+    rotation = ball_.body.inertia / ball_.mass
+    height = np.maximum(p[:, 1] - ball_.radius, 0.0)
+    energy = np.sum(v * v, -1) + rotation * np.sum(w * w, -1) + 2.0 * aero.gravity * height
+    scales = air_time_scales(aero, energy=float(energy.max(initial=0.0)), rotation=rotation)
+    which = min(scales, key=scales.__getitem__)
+    limit = STEP_FRACTION * scales[which]
+    if dt > limit:
+        raise ValueError(
+            f"dt must be <= {limit:.3g} s for this flight, got {dt!r}: a step may be at most "
+            f"{STEP_FRACTION:g} of the shortest time scale of the air, here that of "
+            f"{which}, {scales[which]:.3g} s at the largest speed and spin the ball can reach"
+        )
 
 
 _PER_BOUNCE = ("bounce_time", "bounce_position", "velocity_before", "spin_before",
