@@ -10,6 +10,7 @@ two bounces.
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -69,6 +70,10 @@ def _inputs(o: dict) -> dict[str, Any]:
         if typed:
             raise click.UsageError(f"--{typed[0].replace('_', '-')} goes with --samples N")
         return given
+    for name in ("speed_sd", "angle_sd", "direction_sd", "spin_sd"):
+        if not (math.isfinite(o[name]) and o[name] >= 0):
+            raise click.UsageError(f"--{name.replace('_', '-')} must be >= 0 (a standard "
+                                   f"deviation), got {o[name]!r}")  # fmt: skip
     rng = np.random.default_rng(o["seed"])
     n = o["samples"]
     spread = {"speed": o["speed_sd"] * UNITS[o["speed_unit"]], "angle": o["angle_sd"],
