@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import spinimpact.model.flight as model_flight
+from spinimpact import Stronge, Walton
 from spinimpact.core.flight import STEP_FRACTION
 from spinimpact.model.flight import AIR_DENSITY, GRAVITY, flight, launch
 from spinimpact.model.presets import BALLS, Wall
@@ -117,3 +118,23 @@ def test_no_ball_outruns_the_energy_bound_the_limit_rests_on():
                 total = np.sum(v**2, -1) + ratio * np.sum(w**2, -1)
                 assert np.all(np.isnan(total) | (total <= e[:, None] * (1 + 1e-12)))
             assert np.any(f.bounces.surface == "wall")
+
+
+@pytest.mark.parametrize(
+    "law", [Walton(1.0), Walton(-1.0), Stronge(poisson_ratio=0.3), Stronge(poisson_ratio=-0.9)]
+)
+def test_the_energy_bound_holds_with_compliance_laws(law):
+    """A tangential law keeps |beta| <= 1, so no bounce gains energy either."""
+    rng = np.random.default_rng(3)
+    n, b = 40, BALLS["tennis"]
+    speed, angle, spin = rng.uniform(0, 40, n), rng.uniform(-30, 60, n), rng.uniform(-8e3, 8e3, n)
+    height = rng.uniform(0.1, 3.0, n) + b.radius
+    f = flight(b, "hard", speed=speed, angle=angle, height=height, spin_rpm=spin,
+               spin_axis=[0.2, 0.5, -1.0], max_bounces=5, t_stop=4.0, tangential=law)  # fmt: skip
+    v0, w0 = launch(speed, angle, 0.0, spin, [0.2, 0.5, -1.0])
+    ratio = b.gyration**2
+    e = np.sum(v0 * v0, -1) + ratio * np.sum(w0 * w0, -1) + 2 * GRAVITY * (height - b.radius)
+    after = f.bounces.after
+    total = np.sum(after.velocity**2, -1) + ratio * np.sum(after.spin**2, -1)
+    assert np.isfinite(total[:, 0]).sum() > n // 2
+    assert np.all(np.isnan(total) | (total <= e[:, None] * (1 + 1e-12)))
