@@ -97,3 +97,36 @@ def test_drop_tests_are_drawn_over_the_impact_speed_with_the_kappa_curve():
     assert title.startswith("drop tests") and "\\mu" not in title
     xmin, xmax = top.get_xlim()
     assert xmin > 1.0 and xmax < 8.0  # the impact speeds (2.2 to 6.3 m/s), not 0 +- 0.04
+
+
+def test_corner_panels_show_the_intervals_and_share_each_column():
+    """Diagonal panels about the interval (a rise up to about 10, not out to the far
+    points the profile probed), each column one x axis, each row's ellipses over the
+    values of its diagonal panel, every ellipse inside its panel."""
+    res = fit(data(), BALL, restitution="power")
+    fig = plot_corner(res)
+    p = len(res.names)
+    axes = np.array(fig.axes).reshape(p, p)
+    for i in range(p):
+        lo, hi = axes[i, i].get_xlim()
+        est, low, high = res.estimate[i], res.interval_low[i], res.interval_high[i]
+        assert lo < low < est < high < hi
+        assert hi - lo < 4.0 * (high - low)  # about the interval
+        assert axes[i, i].get_ylim()[1] == pytest.approx(2.6 * res.threshold)
+        assert axes[i, i].get_ylim()[1] < 10.5
+        for k in range(i + 1, p):
+            assert axes[k, i].get_xlim() == (lo, hi)  # the column's x axis
+        for j in range(i):
+            assert axes[i, j].get_ylim() == (lo, hi)  # the row's parameter, same values
+            ring = [ln for ln in axes[i, j].lines if ln.get_xdata().size > 100][0]
+            x0, x1 = axes[i, j].get_xlim()
+            assert x0 < ring.get_xdata().min() and ring.get_xdata().max() < x1
+            assert lo < ring.get_ydata().min() and ring.get_ydata().max() < hi
+
+
+def test_corner_panel_of_a_bound_only_friction_shows_the_bound_and_the_estimate():
+    d = data(same_speed=True)
+    res = fit(d.select(d.incidence_angle_deg < 40.0), BALL, free_gyration=True)
+    lo, hi = plot_corner(res).axes[0].get_xlim()
+    assert res["mu"].one_sided
+    assert lo < res["mu"].low < res["mu"].estimate < hi < 3.0 * res["mu"].estimate

@@ -153,6 +153,34 @@ def _title(res: FitResult) -> str:
     return f"{res.model}\n" + ", ".join(parts) + f" ({100 * res.confidence:g} %){held}"
 
 
+#: The top of a corner plot's profile panels, in units of the interval's threshold: a
+#: profile rise of about 10 at 95 % with known sigmas (a parabola's window is
+#: sqrt(2.6) = 1.6 times the interval's half-widths).
+RISE_SHOWN = 2.6
+
+
+def _window(res: FitResult, i: int, r2: float) -> tuple[float, float]:
+    """The values of parameter ``i`` a corner plot shows: its interval widened to where a
+    parabola through it would rise to ``RISE_SHOWN`` thresholds, the projection of the
+    pair ellipses (``est +- sqrt(r2 var)``), and, for a parameter the data only bound
+    below, from under the bound to past the estimate (the profile is flat beyond)."""
+    est, low, high = res.estimate[i], res.interval_low[i], res.interval_high[i]
+    widen = np.sqrt(RISE_SHOWN)
+    if res.one_sided[i] or not np.isfinite(high):
+        span = max(est - low, 0.05 * abs(low), 1e-6)
+        lo, hi = low - span, max(est, low) + 2.0 * span
+    else:
+        lo, hi = est - widen * (est - low), est + widen * (high - est)
+    var = res.covariance[i, i]
+    if np.isfinite(var) and var > 0:
+        half = np.sqrt(r2 * var)
+        lo, hi = min(lo, est - half), max(hi, est + half)
+    if not hi > lo:  # an interval of zero width (a perfect fit): a small window about it
+        lo, hi = est - 0.05 * max(abs(est), 1.0), est + 0.05 * max(abs(est), 1.0)
+    pad = 0.04 * (hi - lo)
+    return float(lo - pad), float(hi + pad)
+
+
 def plot_corner(res: FitResult) -> Figure:
     """Corner plot of the fitted parameters: each parameter's profile on the diagonal,
     the joint confidence ellipse of each pair below it.
@@ -167,10 +195,13 @@ def plot_corner(res: FitResult) -> Figure:
     matplotlib.figure.Figure
         Diagonal: the profile's rise ``(chi2 - chi2_min)/s^2`` at the values visited,
         the threshold of the interval and the interval's ends (for a parameter the data
-        only bound, its finite part and the lower bound). Below: the estimate and the
-        ellipse of the covariance at the fit's confidence for two parameters (omitted
-        for a pair holding a parameter of infinite standard error; a bound-only
-        parameter's lower bound dashed).
+        only bound, its finite part and the lower bound), shown up to a rise of
+        :data:`RISE_SHOWN` thresholds (about 10 at 95 % with known sigmas). Below: the
+        estimate and the ellipse of the covariance at the fit's confidence for two
+        parameters (omitted for a pair holding a parameter of infinite standard error;
+        a bound-only parameter's lower bound dashed). Each column shares its x axis, and
+        each row's ellipses show the row's parameter over the same values as its
+        diagonal panel: about the interval, wide enough for the ellipses.
 
     Raises
     ------
@@ -181,9 +212,10 @@ def plot_corner(res: FitResult) -> Figure:
     if p < 2:
         raise ValueError(f"a corner plot needs at least two fitted parameters, got {p}")
     fig = _figure(figsize=(2.6 * p + 0.6, 2.6 * p + 0.4))
-    axes = fig.subplots(p, p, squeeze=False)
+    axes = fig.subplots(p, p, squeeze=False, sharex="col")
     r2 = -2.0 * np.log1p(-res.confidence)  # the chi2 quantile of two degrees of freedom
     level = res.threshold
+    windows = [_window(res, k, r2) for k in range(p)]
     for i, ni in enumerate(res.names):
         for j, nj in enumerate(res.names):
             ax = axes[i, j]
@@ -202,6 +234,7 @@ def plot_corner(res: FitResult) -> Figure:
                 for end in (res.interval_low[i], res.interval_high[i]):
                     if np.isfinite(end):
                         ax.axvline(end, color="tab:orange", lw=0.8)
+                ax.set_ylim(-0.04 * RISE_SHOWN * level, RISE_SHOWN * level)
                 ax.set_ylabel("profile rise" if j == 0 else "")
             else:
                 ax.plot(res.estimate[j], res.estimate[i], "+", color="k", ms=8)
@@ -215,10 +248,14 @@ def plot_corner(res: FitResult) -> Figure:
                     circle = np.stack([np.cos(t), np.sin(t)])
                     ring = vecs @ (np.sqrt(np.maximum(vals, 0.0) * r2)[:, None] * circle)
                     ax.plot(res.estimate[j] + ring[0], res.estimate[i] + ring[1], color="tab:blue")
+                ax.set_ylim(*windows[i])
                 if j == 0:
                     ax.set_ylabel(symbol(ni))
+                else:
+                    ax.tick_params(labelleft=False)
             if i == p - 1:
                 ax.set_xlabel(symbol(nj))
+        axes[i, i].set_xlim(*windows[i])  # the column's x axis, shared by its ellipses
     fig.suptitle(f"{res.model}: profiles and {100 * res.confidence:g} % ellipses",
                  fontsize="medium")  # fmt: skip
     return fig
