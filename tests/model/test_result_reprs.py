@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from spinimpact import Body, Walton, solve_sphere
+from spinimpact import Body, Walton, solve_pair, solve_sphere
 from spinimpact.dynamics import HertzContact, Mindlin, simulate
 
 BALL = Body.solid_sphere(mass=2.618e-4, radius=0.0025)
@@ -35,26 +35,45 @@ def test_simulation_repr_is_one_line_with_the_rebound(tangential: Mindlin | None
         assert str(sim) == text
 
 
-def test_compliant_sphere_repr_scalar_and_array() -> None:
+def _xyz(values) -> str:
+    return "(" + ", ".join(f"{float(x) + 0.0:.6g}" for x in values) + ")"
+
+
+@pytest.mark.parametrize("law", [None, Walton(0.3)])
+def test_sphere_reprs_scalar_and_array(law: Walton | None) -> None:
     ball = Body.solid_sphere(mass=0.057, radius=0.033)
-    law = Walton(0.3)
+    name = "SphereImpact" if law is None else "CompliantSphereImpact (Walton(beta0=0.3))"
     one = solve_sphere(ball, [1.0, -3.0, 0.5], [0.0, 0.0, 0.0], mu=0.3, kappa=0.8,
                        tangential=law)  # fmt: skip
     text = repr(one)
     _one_line(text)
-    v = ", ".join(f"{x:.6g}" for x in one.after.velocity)
+    tail = (f"dissipated {one.dissipated_energy:.6g} J" if law is None
+            else f"beta={one.tangential_restitution:.6g}")  # fmt: skip
     assert text == (
-        f"<CompliantSphereImpact {one.regime} (Walton(beta0=0.3)): after v=({v}) m/s, "
-        f"spin=({', '.join(f'{x:.6g}' for x in one.after.spin)}) rad/s; "
-        f"beta={one.tangential_restitution:.6g}>"
+        f"<{name} {one.regime}: after v={_xyz(one.after.velocity)} m/s, "
+        f"spin={_xyz(one.after.spin)} rad/s; {tail}>"
     )
+    if law is not None:  # beta0 = 0.3: the slip (1, 0, 0.5) leaves as -0.3 of itself
+        assert "v=(0.628571, 2.4, 0.314286) m/s" in text and "beta=0.3>" in text
     rng = np.random.default_rng(3)
     v = np.column_stack([rng.uniform(-3, 3, 50), rng.uniform(-5, -0.5, 50), np.zeros(50)])
     many = solve_sphere(ball, v, [0.0, 0.0, 10.0], mu=0.3, kappa=0.8, tangential=law)
     text = repr(many)
     _one_line(text)
     names, counts = np.unique(many.regime, return_counts=True)
-    assert text.startswith("<CompliantSphereImpact of shape (50,) (Walton(beta0=0.3)): ")
-    for name, count in zip(names, counts, strict=True):
-        assert f"{name}: {count}" in text
-    assert sum(counts) == 50
+    assert len(names) >= 2 and sum(counts) == 50
+    kinds = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+    assert text == f"<{name} of shape (50,): {kinds}>"
+
+
+def test_pair_repr() -> None:
+    ball = Body.solid_sphere(mass=0.17, radius=0.028)
+    imp = solve_pair(ball, ball, velocity1=[2.0, 0, 0], spin1=[0, 0, -20.0],
+                     velocity2=[0, 0, 0], spin2=[0, 0, 0], mu=0.1, kappa=0.9,
+                     normal=[-1.0, 0, 1.0])  # fmt: skip
+    text = repr(imp)
+    _one_line(text)
+    assert text == (
+        f"<PairImpact {imp.regime}: after v1={_xyz(imp.after1.velocity)} m/s, "
+        f"v2={_xyz(imp.after2.velocity)} m/s; dissipated {imp.dissipated_energy:.6g} J>"
+    )

@@ -22,7 +22,7 @@ from ..core import sphere3d as kernels
 from .body import Body
 from .impact import State, _restitution
 from .result import Array, Result, freeze
-from .sphere3d import State3, Surface, Vector, _spin_components, _state, _vector
+from .sphere3d import State3, Surface, Vector, _spin_components, _state, _summary, _vector, _xyz
 
 __all__ = ["CompliantImpact", "CompliantSphereImpact", "solve_compliant", "solve_sphere_compliant"]
 
@@ -214,16 +214,10 @@ class CompliantSphereImpact(Result):
         return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
     def __repr__(self) -> str:
-        if self.shape != ():
-            names, counts = np.unique(self.regime, return_counts=True)
-            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
-            return f"<CompliantSphereImpact of shape {self.shape} ({self.law!r}): {summary}>"
         a = self.after
-        v, w = (", ".join(f"{float(x):.6g}" for x in vec) for vec in (a.velocity, a.spin))
-        return (
-            f"<CompliantSphereImpact {self.regime} ({self.law!r}): after v=({v}) m/s, "
-            f"spin=({w}) rad/s; beta={self.tangential_restitution:.6g}>"
-        )
+        return _summary(self, f"CompliantSphereImpact ({self.law!r})", lambda: (
+            f"v={_xyz(a.velocity)} m/s, spin={_xyz(a.spin)} rad/s; "
+            f"beta={self.tangential_restitution:.6g}"))  # fmt: skip
 
 
 def solve_sphere_compliant(

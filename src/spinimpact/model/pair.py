@@ -21,7 +21,7 @@ from . import _fast_sphere
 from .body import Body
 from .impact import _restitution
 from .result import Array, Result, freeze
-from .sphere3d import State3, Vector, _state, _vector
+from .sphere3d import State3, Vector, _state, _summary, _vector, _xyz
 
 __all__ = ["PairImpact", "solve_pair"]
 
@@ -78,6 +78,12 @@ class PairImpact(Result):
 
     _shape_field = "tau1"
     _body_prefix = True
+
+    def __repr__(self) -> str:
+        a, b = self.after1, self.after2
+        return _summary(self, "PairImpact", lambda: (
+            f"v1={_xyz(a.velocity)} m/s, v2={_xyz(b.velocity)} m/s; "
+            f"dissipated {self.dissipated_energy:.6g} J"))  # fmt: skip
 
 
 def _energy(m, inertia, v, w):  # type: ignore[no-untyped-def]

@@ -9,6 +9,7 @@ along it, and the spin about the normal is unchanged.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -60,6 +61,20 @@ class State3(Result):
     @property
     def spin(self) -> np.ndarray:
         return np.stack([np.asarray(self.wx), np.asarray(self.wy), np.asarray(self.wz)], -1)
+
+
+def _xyz(vector: Any) -> str:
+    return "(" + ", ".join(f"{float(x) + 0.0:.6g}" for x in vector) + ")"
+
+
+def _summary(imp: Result, name: str, text: Callable[[], str]) -> str:
+    """The one-line repr of a 3D impact result: the regime counts of an array, or of one
+    impact its regime and ``text()`` (its rebound; ``name`` may carry a law)."""
+    if imp.shape != ():
+        names, counts = np.unique(imp.regime, return_counts=True)  # type: ignore[attr-defined]
+        kinds = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+        return f"<{name} of shape {imp.shape}: {kinds}>"
+    return f"<{name} {imp.regime}: after {text()}>"  # type: ignore[attr-defined]
 
 
 def _state(v: np.ndarray, w: np.ndarray) -> State3:
@@ -177,6 +192,12 @@ class SphereImpact(Result):
     grips: Array
 
     _shape_field = "tau1"
+
+    def __repr__(self) -> str:
+        a = self.after
+        return _summary(self, "SphereImpact", lambda: (
+            f"v={_xyz(a.velocity)} m/s, spin={_xyz(a.spin)} rad/s; "
+            f"dissipated {self.dissipated_energy:.6g} J"))  # fmt: skip
 
     def history(self, n: int = 201) -> SphereHistory:
         """The process over ``tau`` (one impact): ``n`` points on ``[0, tau_1]`` plus
