@@ -82,7 +82,7 @@ def test_the_state_at_a_terminal_event_is_integrated_up_to_it():
         return y[0]
 
     run = integrate_events(fun, 0.0, np.array([0.0, 1.0]), 10.0,
-                           [Event(lambda t, y: y[1], -1, False), Event(sep, -1)],
+                           [Event(lambda t, y: y[1], -1, False), Event(sep, -1, integrate_to=True)],
                            rtol=1e-12, atol=1e-14, max_step=1.0)  # fmt: skip
     assert run.status == 1
     assert run.t == pytest.approx(math.pi, abs=1e-11)

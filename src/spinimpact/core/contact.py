@@ -291,7 +291,7 @@ def integrate_contact(
     ``W_r = W_n(t1) - W_c``), measured on the process rather than from a
     closed form.
     """
-    from scipy.integrate import solve_ivp
+    from .events import Event, integrate_events
 
     speed = abs(vy)
     vscale = abs(vx) + speed + abs(radius * omega)
@@ -305,22 +305,15 @@ def integrate_contact(
         friction = ratio * n
         return [-vy_, friction / mass, n / mass, friction * radius / inertia, n, friction, n * vy_]
 
-    def slip_zero(_t, y, ratio):
+    def slip_zero(_t, y):
         return y[1] + radius * y[3]
 
-    slip_zero.terminal = True
-
-    def compression_end(_t, y, ratio):
+    def compression_end(_t, y):
         return y[2]
 
-    compression_end.direction = 1
-
-    def separation(_t, y, ratio):
+    def separation(_t, y):
         n = force(y[0], -y[2])
         return math.copysign(abs(n) ** (1.0 / exponent), n)
-
-    separation.terminal = True
-    separation.direction = -1
 
     y = np.array([0.0, vx, vy, omega, 0.0, 0.0, 0.0])
     t = 0.0
@@ -329,18 +322,24 @@ def integrate_contact(
     t0 = t_star = tau0 = work_n0 = math.nan
     horizon = 1e3 * time_scale
     while True:
-        ratio = 0.0 if stuck else -mu * math.copysign(1.0, y[1] + radius * y[3])
-        events = [compression_end, separation] + ([] if stuck else [slip_zero])
-        sol = solve_ivp(rhs, (t, t + horizon), y, method="DOP853", args=(ratio,), events=events,
-                        rtol=rtol, atol=atol, dense_output=True)  # fmt: skip
+        sign = math.copysign(1.0, y[1] + radius * y[3])
+        ratio = 0.0 if stuck else -mu * sign
+        # each crosses zero once: v_y rising, N falling, the slip towards zero (at the step
+        # ends, as solve_ivp; the state at separation is integrated up to it, not
+        # interpolated across the end of the force)
+        events = [Event(compression_end, 1, terminal=False, watched=False),
+                  Event(separation, -1, watched=False, integrate_to=True)]  # fmt: skip
+        events += [] if stuck else [Event(slip_zero, -int(sign), watched=False)]
+        sol = integrate_events(lambda tt, yy, r=ratio: rhs(tt, yy, r), t, y, t + horizon,
+                               events, rtol=rtol, atol=atol)  # fmt: skip
         if sol.status == -1:
             raise RuntimeError(f"contact integration failed: {sol.message}")
         if sol.t_events[0].size and math.isnan(t0):
             t0, y0 = sol.t_events[0][0], sol.y_events[0][0]
             tau0, work_n0 = y0[4], y0[6]
-        if sol.t[-1] > t:  # an event exactly at the start leaves nothing to keep
-            segments.append((t, sol.t[-1], sol.sol, stuck))
-        t, y = sol.t[-1], sol.y[:, -1].copy()
+        if sol.t > t:  # an event exactly at the start leaves nothing to keep
+            segments.append((t, sol.t, sol.sol, stuck))
+        t, y = sol.t, sol.y.copy()
         if sol.status == 0:
             raise RuntimeError("contact did not end within 1000 time scales; check the contact law")
         if sol.t_events[1].size:  # separation: N has fallen to zero

@@ -21,10 +21,13 @@ order):
   and if zero is reached, the crossing before it is the event;
 * each crossing is polished by Brent's method on the interpolant to ``4 eps``, as
   ``solve_ivp`` polishes its own;
-* the step that holds a terminal event is integrated anew from its start up to the
-  event, and the run's final state is that integration's: the right-hand side may
-  change its form at the event (a contact force that ends at separation), and the
-  interpolant of a step across such a change is less accurate than the integrator.
+* where the right-hand side changes form at a terminal event (a contact force that
+  ends at separation: ``Event.integrate_to``), the step that holds it is integrated
+  anew from its start up to the event and the run's final state is that
+  integration's, since the interpolant of a step across such a change is less
+  accurate than the integrator. Elsewhere the state at an event is the interpolant's,
+  the same on which the root was found (so that, for example, a slip found to stop
+  has stopped in the returned state to the root's precision).
 
 A dip is missed only where the parabola misjudges its minimum by more than three
 quarters of its height, which steps that resolve the oscillations rule out for smooth
@@ -50,12 +53,15 @@ class Event(NamedTuple):
     """An event function ``g(t, y)`` whose zero crossing in ``direction`` (``-1``:
     falling, ``+1``: rising) is an event; ``terminal`` ones end the integration.
     ``watched=False``: evaluated at the ends of the steps only, as ``solve_ivp`` does
-    (for a function known to cross zero once, without dips)."""
+    (for a function known to cross zero once, without dips). ``integrate_to``: the
+    right-hand side changes form where this event ends the run (a force that stops at
+    separation), so the state there is integrated up to the event, not interpolated."""
 
     function: Callable[[float, np.ndarray], float]
     direction: int
     terminal: bool = True
     watched: bool = True
+    integrate_to: bool = False
 
 
 class EventRun(NamedTuple):
@@ -207,7 +213,7 @@ def integrate_events(
         times = t_old + (t_new - t_old) * fractions
         times[-1] = t_new
         samples = interps[-1](times).T
-        stop = math.inf
+        stop, stopper = math.inf, None
         for i, ev in enumerate(events):
             sign, hist = -float(ev.direction), hists[i]
             points = zip(times, samples, strict=True) if ev.watched else [(t_new, samples[-1])]
@@ -218,18 +224,19 @@ def integrate_events(
                 if root is not None:
                     found[i].append(root)
                     if ev.terminal:
-                        stop = min(stop, root)
+                        stop, stopper = min((stop, stopper), (root, ev), key=lambda x: x[0])
                         break
         if stop < math.inf:
             status, message = 1, "A termination event occurred."
         elif solver.status == "finished":
             status, stop = 0, t_new
     n = bisect.bisect_left(ts, stop)  # ts[n - 1] < stop <= ts[n]
-    if status == 1 and n > 0:  # the step that holds the event, integrated anew up to it
+    if status == 1 and n > 0 and stopper.integrate_to:  # its step integrated anew up to it
         times, dense, y_end = _up_to(fun, ts[n - 1], states[n - 1], stop, rtol, atol, max_step)
         ts, interps = [*ts[:n], *times], [*interps[: n - 1], *dense]
     else:
-        ts, interps, y_end = [*ts[:n], stop], interps[: max(n, 1)], solver.y.copy()
+        ts, interps = [*ts[:n], stop], interps[: max(n, 1)]
+        y_end = y_at(stop) if status == 1 else solver.y.copy()
     t_events = [np.array([t for t in f if t <= stop]) for f in found]
     y_events = [np.array([y_at(t) for t in te]).reshape(te.size, len(y_end)) for te in t_events]
     sol = OdeSolution(ts, interps) if stop > t0 else None

@@ -293,7 +293,8 @@ def integrate_tangential(
             return rhs(tt, yy, stick, sigma)
 
         # v_y and N^(1/n) cross zero once (N >= 0 until separation): step ends suffice
-        events = [Event(compression_end, 1, False, False), Event(separation, -1, True, False)]
+        events = [Event(compression_end, 1, terminal=False, watched=False),
+                  Event(separation, -1, watched=False, integrate_to=True)]  # fmt: skip
         if stick:
             events += [Event(cap_up, -1), Event(cap_down, -1)]
         elif mu != 0.0:
