@@ -130,9 +130,11 @@ def _tangential_law(o: dict[str, Any]) -> Any:
 
 def _print_tangential(sim: Any) -> None:
     """The rebound with tangential compliance beside the rigid closed form."""
+    from ..viz.tables import duration
+
     rigid = sim.rigid()
     click.echo(f"Hertz-Mindlin impact with {sim.contact!r}, k_t/k_n = {sim.stiffness_ratio:.6g}")
-    click.echo(f"contact duration {_duration(sim.contact_duration)}, peak normal force "
+    click.echo(f"contact duration {duration(sim.contact_duration)}, peak normal force "
                f"{sim.peak_force:.6g} N, {sim.switches} stick/slip switches")  # fmt: skip
     click.echo(f"{'':24s}{'compliant':>14s}{'rigid':>14s}")
     rows = (("vx+ (m/s)", sim.after.vx, rigid.after.vx),
@@ -141,14 +143,6 @@ def _print_tangential(sim: Any) -> None:
             ("beta = -u+/u-", sim.tangential_restitution, _beta(sim, rigid)))  # fmt: skip
     for name, a, b in rows:
         click.echo(f"{name:24s}{float(a):14.6g}{float(b):14.6g}")
-
-
-def _duration(seconds: float) -> str:
-    """A duration in us below 1 ms, in ms below 1 s, else in s (six digits)."""
-    for unit, scale in (("us", 1e-6), ("ms", 1e-3)):
-        if abs(seconds) < 1e3 * scale:
-            return f"{seconds / scale:.6g} {unit}"
-    return f"{seconds:.6g} s"
 
 
 def _beta(sim: Any, rigid: Any) -> float:

@@ -16,7 +16,7 @@ from rich.text import Text
 from ..model.impact import Impact
 from ..model.particle import ParticleImpact
 from ._labels import report_title
-from .tables import Table, impact_tables, number, regime_summary, simulation_table
+from .tables import Table, duration, impact_tables, number, regime_summary, simulation_table
 
 if TYPE_CHECKING:
     from ..model.dynamics import Simulation
@@ -107,21 +107,21 @@ def print_simulation(sim: Simulation, console: Console | None = None) -> None:
 
     Notes
     -----
-    The contact duration is printed in ms and the largest compression in µm;
+    Times are printed in us, ms or s (:func:`~spinimpact.viz.tables.duration`) and the
+    largest compression in µm;
     the table is :func:`~spinimpact.viz.tables.simulation_table`.
     """
     console = _console(console)
     console.print(Text.assemble(("Compliant impact", "bold"), f" with {sim.contact!r}"))
     console.print(
-        f"contact duration {number(sim.contact_duration * 1e3, 'ms')}, peak normal force "
+        f"contact duration {duration(sim.contact_duration)}, peak normal force "
         f"{number(sim.peak_force, 'N')}, largest compression "
         f"{number(sim.max_compression * 1e6, 'µm')}",
         markup=False,
     )
     if sim.stick_time == sim.stick_time:  # not NaN
         console.print(
-            f"slip stops at t = {number(sim.stick_time * 1e3, 'ms')} "
-            f"(tau = {number(sim.tau_star, 'N s')})",
+            f"slip stops at t = {duration(sim.stick_time)} (tau = {number(sim.tau_star, 'N s')})",
             markup=False,
         )
     table = simulation_table(sim)

@@ -34,7 +34,8 @@ if TYPE_CHECKING:
     from ..model.impact import Impact
     from ..model.particle import ParticleImpact
 
-__all__ = ["Table", "number", "impact_tables", "regime_summary", "simulation_table"]
+__all__ = ["Table", "number", "duration", "impact_tables", "regime_summary",
+           "simulation_table"]  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -97,6 +98,22 @@ def number(x: Any, unit: str = "") -> str:
     else:
         text = f"{x:.6g}"
     return f"{text} {unit}".rstrip()
+
+
+def duration(seconds: Any) -> str:
+    """Format a time for a report in a unit that suits it: us below 1 ms, ms below 1 s,
+    else s (six significant digits, as :func:`number`).
+
+    Examples
+    --------
+    >>> duration(6.18087e-6), duration(0.0031416), duration(2.5)
+    ('6.18087 us', '3.1416 ms', '2.5 s')
+    """
+    t = float(seconds)
+    for unit, scale in (("us", 1e-6), ("ms", 1e-3)):
+        if abs(t) < 1e3 * scale:
+            return number(t / scale, unit)
+    return number(t, "s")
 
 
 def _labelled(
