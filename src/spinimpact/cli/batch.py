@@ -18,6 +18,7 @@ import click
 
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, progress, surface_options
+from ._compliance import tangential_law, tangential_options
 
 __all__ = ["batch_command"]
 
@@ -55,6 +56,7 @@ def _given(ctx: click.Context, name: str) -> bool:
     help="Restitution law of rows without a 'law' cell (planar bodies and pendulums; "
     "default poisson). The paper's bodies obey the three laws alike.",
 )
+@tangential_options
 @click.option(
     "--on-error",
     type=click.Choice(["stop", "skip"]),
@@ -91,6 +93,9 @@ def batch_command(
     Pendulums on a pivot: mass, inertia, gx, gy, px, py, omega (centre of mass and
       contact point from the pivot, m), optionally mu, kappa, law.
 
+    --tangential walton|stronge: the paper's bodies under a tangential compliance law
+      (solve(..., tangential=law)); the result fields are then CompliantImpact's.
+
     Writes the input columns plus every result field that is not an input (for planar
     files also the law, mu and kappa used where the file lacks them), or those --fields
     names; Parquet fields carry their units. An output file is replaced only when the
@@ -111,12 +116,17 @@ def batch_command(
                 raise click.UsageError(f"--{exc}") from None
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
     defaults["law"] = o["law"]
+    defaults["tangential"] = tangential_law(o)
     chosen = None if fields is None else [f for f in fields.split(",") if f.strip()]
 
     def check_kind(kind: str) -> None:
         given = [f"--{n}" for n in _PAPER_OPTIONS if _given(ctx, n)]
+        what = "free planar bodies" if kind == "planar" else "pendulums"
+        law = defaults["tangential"]
+        if kind != "paper" and law is not None:
+            raise click.UsageError(f"--tangential {law.name} applies to the paper's bodies, "
+                                   f"but the columns of {source} describe {what}")  # fmt: skip
         if kind != "paper" and given:
-            what = "free planar bodies" if kind == "planar" else "pendulums"
             raise click.UsageError(
                 f"{given[0]} describes the paper's bodies, but the columns of {source} describe "
                 f"{what}: their mass and geometry come from the file"

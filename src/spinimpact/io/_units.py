@@ -22,7 +22,8 @@ _GROUPS = {
     "work_compression_normal work_compression_tangential work_restitution_normal "
     "work_restitution_tangential",
     "1": "mu kappa zeta incidence_ratio impulse_ratio dissipated_fraction energy_loss "
-    "work_ratio_tangential newton_restitution poisson_restitution energetic_restitution",
+    "work_ratio_tangential newton_restitution poisson_restitution energetic_restitution "
+    "tangential_restitution centre_tangential_restitution",
 }
 
 #: Column name -> its SI unit (``"1"``: a number without dimension).

@@ -11,7 +11,8 @@ takes the default; a row gives either a ``body`` preset or a ``gyration``). The
 output holds the input columns, then every column of the
 :class:`~spinimpact.Impact` that is not an input (:data:`RESULT_COLUMNS`, taken
 from :meth:`Impact.column_names <spinimpact.model.result.Result.column_names>`,
-so a new field of the result is a new column of the file). Memory stays bounded
+so a new field of the result is a new column of the file; under a tangential law,
+``defaults["tangential"]``, those of the :class:`~spinimpact.CompliantImpact`). Memory stays bounded
 by the chunk size, whatever the file size. Output goes to a temporary file that
 is renamed only when the whole run succeeded.
 """
@@ -29,7 +30,7 @@ import numpy as np
 
 from .._validation import available, require
 from ..model.body import PRESETS, Body
-from ..model.impact import Impact, solve
+from ..model.impact import solve
 from ._arrow_csv import csv_chunks as arrow_csv_chunks
 from ._background import BackgroundRows
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
@@ -44,6 +45,7 @@ from ._tables import (
     file_format,
     parquet_chunks,
 )
+from .batch_columns import RESULT_COLUMNS, column_kinds, result_columns
 from .planar_batch import PlanarBatch, body_kind
 
 __all__ = [
@@ -63,64 +65,6 @@ __all__ = [
 REQUIRED = ("vx", "vy", "omega")
 OPTIONAL = ("mu", "kappa", "mass", "radius", "gyration", "body")
 NUMERIC = ("vx", "vy", "omega", "mu", "kappa", "mass", "radius", "gyration")
-
-#: Columns of an :class:`Impact` that a batch row already holds as input columns
-#: (``before_vx`` is the row's ``vx``, ...): not repeated in the output.
-INPUT_FIELDS = ("mass", "radius", "gyration", "mu", "kappa", "before_vx", "before_vy",
-                "before_omega")  # fmt: skip
-#: Result columns written first, right after the inputs (the headline of a row).
-LEADING = ("regime",)
-
-
-def result_columns(result: type[Impact] = Impact) -> tuple[str, ...]:
-    """The output columns of a batch file: ``result``'s flat columns less the inputs.
-
-    Parameters
-    ----------
-    result : type
-        The result type whose :meth:`~spinimpact.model.result.Result.column_names`
-        give the vocabulary (:class:`~spinimpact.Impact`).
-
-    Returns
-    -------
-    tuple of str
-        :data:`LEADING` first, then the other columns in the result's order,
-        without :data:`INPUT_FIELDS`.
-
-    Examples
-    --------
-    >>> result_columns()[:4]
-    ('regime', 'zeta', 'after_vx', 'after_vy')
-    """
-    names = [n for n in result.column_names() if n not in INPUT_FIELDS]
-    return tuple(n for n in LEADING if n in names) + tuple(n for n in names if n not in LEADING)
-
-
-def _reader(name: str) -> Callable[[Impact], np.ndarray]:
-    def column(impact: Impact) -> np.ndarray:
-        return impact.columns()[name]
-
-    column.__name__ = column.__qualname__ = f"column_{name}"
-    column.__doc__ = f"The ``{name}`` column of an Impact (its result's shape)."
-    return column
-
-
-#: Output column -> how to read it from an :class:`Impact` (``impact.columns()[name]``).
-RESULT_COLUMNS: dict[str, Callable[[Impact], np.ndarray]] = {
-    name: _reader(name) for name in result_columns()
-}
-
-
-@functools.cache
-def column_kinds() -> dict[str, str]:
-    """Each output column's kind: ``"float"``, ``"text"`` (regime) or ``"flag"`` (bool).
-
-    Read from the dtypes of one solved impact, so a new field gets the right kind.
-    """
-    probe = solve(Body.solid_sphere(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.3, kappa=0.8)
-    kinds = {"b": "flag", "U": "text", "S": "text", "O": "text"}
-    columns = probe.columns()
-    return {n: kinds.get(np.asarray(columns[n]).dtype.kind, "float") for n in RESULT_COLUMNS}
 
 
 @dataclass(frozen=True)
@@ -187,12 +131,11 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
                     preset=np.where(custom[good], "", preset[good]),
                     gyration=take["gyration"],
                 )
-            imp = solve(
-                body, take["vx"], take["vy"], take["omega"], mu=take["mu"], kappa=take["kappa"]
-            )
+            imp = solve(body, take["vx"], take["vy"], take["omega"], mu=take["mu"],
+                        kappa=take["kappa"], tangential=defaults.get("tangential"))  # fmt: skip
         solved = imp.columns()
     results = {}
-    for name, kind in column_kinds().items():
+    for name, kind in column_kinds(defaults.get("tangential")).items():
         if good.all():  # every row solved: the arrays as they are (float, str or bool)
             column = np.asarray(solved[name])
         elif kind == "float":
@@ -288,7 +231,9 @@ def run_batch(
         Values for the optional columns where a file lacks them: ``mu``,
         ``kappa``, ``mass``, ``radius`` and either ``body`` (a preset name) or
         ``gyration``; for planar files ``mu``, ``kappa`` and ``law`` (``"newton"``,
-        ``"poisson"``, the default, or ``"energetic"``).
+        ``"poisson"``, the default, or ``"energetic"``). ``tangential``: a tangential
+        compliance law for the paper's bodies (``solve(..., tangential=law)``, the
+        :class:`~spinimpact.CompliantImpact` columns: :mod:`spinimpact.io.batch_columns`).
     on_error : {"stop", "skip"}
         ``"stop"`` raises :class:`BatchError` naming the first bad row (and its
         line and column) and writes nothing. ``"skip"`` writes bad rows with an
@@ -366,9 +311,11 @@ def run_batch(
     if check_kind is not None:
         check_kind(kind)
     if kind == "paper":
-        check_header(header, skip, RESULT_COLUMNS, REQUIRED)
-        kinds, numeric = column_kinds(), NUMERIC
+        kinds, numeric = column_kinds(defaults.get("tangential")), NUMERIC
+        check_header(header, skip, kinds, REQUIRED)
         solve_chunk = functools.partial(_solve_chunk, defaults=defaults)
+    elif defaults.get("tangential") is not None:
+        raise BatchError(f"a tangential law applies to the paper's bodies, not to {kind} files")
     else:
         plan = PlanarBatch(kind, header, skip, defaults)
         kinds, numeric, solve_chunk = plan.kinds, plan.numeric, plan.solve
