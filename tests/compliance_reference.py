@@ -2,9 +2,9 @@
 
 Not the closed form of ``spinimpact.core.stronge``: real time, real stiffnesses and masses,
 the normal spring's compression ``delta`` as a state, SciPy's ``solve_ivp`` (DOP853, tight
-tolerances, short steps) with events for every change: end of compression, stick -> slip (``|k_t xi|``
-reaching ``mu N``), slip -> stick (the contact point's velocity on the surface reaching
-zero), separation (``N = 0``).
+tolerances, short steps) with events for every change: end of compression, stick -> slip
+(``|k_t xi|`` reaching ``mu N``), slip -> stick (the contact point's velocity on the surface
+reaching zero), separation (``N = 0``).
 """
 
 from __future__ import annotations
