@@ -55,3 +55,17 @@ def test_out_is_filled_on_every_path(path):
     assert not np.isnan(np.concatenate(out)).any()
     with pytest.raises(ValueError, match="out must be three"):
         fused.rebound(2.0, -3.0, 0.0, 1.0, 0.1, 3.5, 0.5, 0.8, fused=path, out=out)
+
+
+@pytest.mark.skipif(not fused.HAVE_NUMBA, reason="needs the [fast] extra (numba)")
+@pytest.mark.parametrize(
+    "n, kernel", [(7, "_rebound_serial"), (fused.THRESHOLD, "_rebound_arrays")]
+)
+def test_small_arrays_run_on_the_calling_thread(cases, monkeypatch, n, kernel):
+    """Below THRESHOLD the automatic choice is the serial kernel (no thread pool to wake),
+    from there on the parallel one; a counting wrapper sees which ran."""
+    calls = []
+    real = getattr(fused, kernel)
+    monkeypatch.setattr(fused, kernel, lambda *a: calls.append(len(a)) or real(*a))
+    fused.rebound(*_inputs(cases, n))
+    assert calls == [11]

@@ -8,8 +8,8 @@ each input once and write each output once, in parallel over cores.
 They perform the same IEEE operations in the same order as the NumPy kernels
 (no fast-math, no fused multiply-add), so the results are identical bit for
 bit; ``tests/core/test_fused.py`` checks this over all regimes. Without Numba
-:func:`rebound` takes the NumPy path, below :data:`THRESHOLD` impacts too, and for one
-impact the law on floats.
+:func:`rebound` takes the NumPy path, and for one impact the law on floats; with it, arrays
+below :data:`THRESHOLD` impacts run a serial kernel on the calling thread.
 
 The compiled kernels are cached on disk (Numba's ``cache=True``) where Numba finds a
 writable place (``__pycache__`` beside this file, the user's cache folder under
@@ -41,14 +41,16 @@ except ImportError as err:  # pragma: no cover
     _NUMBA_ERROR = err
 
 
-def _njit(function):
+def _njit(function, *, parallel=True):
     """``numba.njit`` with an on-disk cache, or without one where none can be written.
 
     Numba looks for a cache folder when the function is decorated, at import, and raises
     ``RuntimeError("cannot cache function ...: no locator available ...")`` if no
     candidate is writable; the kernels then compile in memory on their first call.
+    ``parallel=False`` gives a kernel that runs on the calling thread (no thread pool to
+    wake: small arrays).
     """
-    options = {"parallel": True, "fastmath": False, "error_model": "numpy"}
+    options = {"parallel": parallel, "fastmath": False, "error_model": "numpy"}
     try:
         return numba.njit(cache=True, **options)(function)
     except RuntimeError as err:  # pragma: no cover - depends on the file system
@@ -77,24 +79,35 @@ if HAVE_NUMBA:
             out_vy[i] = -k * v + 0.0  # eq. 3.4
             out_om[i] = omega[i] + zm1 * f1 / mr  # eq. 2.3
 
+    @numba.njit(inline="always")
+    def _rebound_at(i, vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om):
+        """Impact ``i`` of the array kernels (inlined into each loop)."""
+        m, r, z, f_mu, k, v = mass[i], radius[i], zeta[i], mu[i], kappa[i], vy[i]
+        u = vx[i] + r * omega[i]
+        stick = -m * u / z
+        slide = -f_mu * np.sign(u) * ((1.0 + k) * (-m * v))
+        f1 = (stick if abs(u) <= (1.0 + k) * z * f_mu * abs(v) else slide) + 0.0
+        out_vx[i] = vx[i] + f1 / m
+        out_vy[i] = -k * v + 0.0
+        out_om[i] = omega[i] + (z - 1.0) * f1 / (m * r)
+
     @_njit
     def _rebound_arrays(vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om):
         for i in numba.prange(out_vx.size):
-            m, r, z, f_mu, k, v = mass[i], radius[i], zeta[i], mu[i], kappa[i], vy[i]
-            u = vx[i] + r * omega[i]
-            stick = -m * u / z
-            slide = -f_mu * np.sign(u) * ((1.0 + k) * (-m * v))
-            f1 = (stick if abs(u) <= (1.0 + k) * z * f_mu * abs(v) else slide) + 0.0
-            out_vx[i] = vx[i] + f1 / m
-            out_vy[i] = -k * v + 0.0
-            out_om[i] = omega[i] + (z - 1.0) * f1 / (m * r)
+            _rebound_at(i, vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om)
+
+    def _serial(vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om):
+        for i in range(out_vx.size):
+            _rebound_at(i, vx, vy, omega, mass, radius, zeta, mu, kappa, out_vx, out_vy, out_om)
+
+    _rebound_serial = _njit(_serial, parallel=False)
 
 
-#: Fewest impacts for which ``fused=None`` runs the Numba kernel. One impact takes the law on
-#: floats (a few microseconds). Below this the NumPy path's cost is bounded (40 to 170 us),
-#: while the parallel kernel's, though a little lower at best (about 30 us, mostly waking its
-#: threads), had a tail of several milliseconds whenever other processes held the cores
-#: (docs/performance.md); above it the kernel's gain outweighs that risk. Same bits either way.
+#: Fewest impacts for which ``fused=None`` runs the parallel Numba kernel. One impact takes
+#: the law on floats (a few microseconds); below this, with Numba, a serial Numba kernel on
+#: the calling thread (no thread pool to wake: the parallel kernel's floor is about 30 us,
+#: with a tail of several milliseconds whenever other processes hold the cores), and the
+#: NumPy path without Numba. Same bits on every path.
 THRESHOLD = 10_000
 
 
@@ -113,11 +126,11 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     broadcast to one shape; the results are float64 arrays of that shape (0-d for one
     impact), equal bit for bit whichever path computes them. ``fused=None`` picks the
     fastest: the per-contact law on floats (:func:`spinimpact.core.scalar.rebound`) for one
-    impact, the NumPy path below :data:`THRESHOLD` impacts or without Numba, the Numba
-    kernel from there on; ``False`` forces the NumPy path; ``True`` requires Numba and runs its
-    kernel. ``out`` may give three preallocated C-contiguous float64 arrays of the
-    broadcast shape to write into (avoids page-faulting fresh memory on every call in a
-    loop over chunks).
+    impact, a serial Numba kernel below :data:`THRESHOLD` impacts, the parallel Numba kernel
+    from there on, and the NumPy path without Numba; ``False`` forces the NumPy path; ``True``
+    requires Numba and runs its parallel kernel. ``out`` may give three preallocated
+    C-contiguous float64 arrays of the broadcast shape to write into (avoids page-faulting
+    fresh memory on every call in a loop over chunks).
 
     Raises
     ------
@@ -143,9 +156,10 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     )):  # fmt: skip
         raise ValueError(f"out must be three C-contiguous float64 arrays of shape {shape}")
     size = math.prod(shape)
+    serial = fused is None and HAVE_NUMBA and 1 < size < THRESHOLD
     if fused is None:
         fused = HAVE_NUMBA and size >= THRESHOLD
-    if not fused:
+    if not fused and not serial:
         if size == 1:  # one impact: floats, not 0-d arrays (a dozen NumPy calls saved)
             values = _scalar_rebound(*(a.item() for a in given))[:3]
         else:
@@ -161,7 +175,9 @@ def rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, *, fused=None, out=Non
     targets = [o.reshape(-1) for o in out]
     velocities = [_frozen(a) for a in args[:3]]
     params = [np.asarray(p, dtype=np.float64) for p in (mass, radius, zeta, mu, kappa)]
-    if all(p.size == 1 for p in params):  # the common sweep: one body, one surface
+    if serial:
+        _rebound_serial(*velocities, *(_frozen(a) for a in args[3:]), *targets)
+    elif all(p.size == 1 for p in params):  # the common sweep: one body, one surface
         _rebound_scalar(*velocities, *(float(p.reshape(-1)[0]) for p in params), *targets)
     else:
         # 1-D broadcast views (stride 0 for a repeated value) go in as they are:
