@@ -16,13 +16,23 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import broadcast, check, validated, vector3
+from .._validation import broadcast, validated
 from ..core import compliance as laws
 from ..core import sphere3d as kernels
 from .body import Body
 from .impact import State, _restitution
 from .result import Array, Result, freeze
-from .sphere3d import State3, Surface, Vector, _spin_components, _state, _summary, _vector, _xyz
+from .sphere3d import (
+    State3,
+    Surface,
+    Vector,
+    _incidence,
+    _spin_components,
+    _state,
+    _summary,
+    _vector,
+    _xyz,
+)
 
 __all__ = ["CompliantImpact", "CompliantSphereImpact", "solve_compliant", "solve_sphere_compliant"]
 
@@ -227,22 +237,10 @@ def solve_sphere_compliant(
     """:func:`~spinimpact.solve_sphere` under a tangential compliance ``law``."""
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    surface = Surface() if surface is None else surface
-    if not isinstance(surface, Surface):
-        raise TypeError(f"surface must be a spinimpact.Surface, got {type(surface).__name__}")
-    v, w, mu_ = vector3("velocity", velocity), vector3("spin", spin), validated("mu", mu)
-    nrm, vs = surface.normal, surface.velocity
-    parts = [np.asarray(x) for x in (body.mass, body.radius, body.inertia, body.zeta)]
-    given = [] if callable(kappa) else [np.shape(kappa)]
-    shape = np.broadcast_shapes(v.shape[:-1], w.shape[:-1], nrm.shape[:-1], vs.shape[:-1],
-                                mu_.shape, *(x.shape for x in parts), *given)  # fmt: skip
-    v, w, nrm, vs = (np.broadcast_to(x, (*shape, 3)) for x in (v, w, nrm, vs))
-    m, radius, inertia, zeta, mu_ = (np.broadcast_to(x, shape) for x in (*parts, mu_))
-    c = kernels.sphere_contact(v, w, nrm, radius, vs)
+    v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c = _incidence(
+        body, velocity, spin, mu, kappa, surface
+    )
     cn, speed = c.normal_velocity, c.slip_speed
-    check("the contact point's normal velocity", cn, lambda x: x < 0,
-          "< 0 (the sphere must approach the surface)")  # fmt: skip
-    kappa_ = np.broadcast_to(_restitution(kappa, cn), shape)
     speed1, stuck = law.rebound_slip(speed, cn, zeta, mu_, kappa_)  # signed, along c_t^-
     f1 = laws.tangential_impulse_of(m, zeta, speed, speed1)
     friction = np.asarray(f1)[..., None] * c.direction

@@ -239,6 +239,28 @@ def _spin_components(normal, travel, spin):
     return top, kernels.dot(spin, normal), kernels.dot(spin, e)
 
 
+def _incidence(body, velocity, spin, mu, kappa, surface):
+    """Validated, broadcast inputs of one or many sphere impacts and their contact
+    (``kernels.sphere_contact``), refusing a contact point that does not approach:
+    ``(v, w, normal, surface_velocity, m, radius, inertia, zeta, mu, kappa, contact)``."""
+    surface = Surface() if surface is None else surface
+    if not isinstance(surface, Surface):
+        raise TypeError(f"surface must be a spinimpact.Surface, got {type(surface).__name__}")
+    v, w, mu_ = vector3("velocity", velocity), vector3("spin", spin), validated("mu", mu)
+    nrm, vs = surface.normal, surface.velocity
+    parts = [np.asarray(x) for x in (body.mass, body.radius, body.inertia, body.zeta)]
+    given = [] if callable(kappa) else [np.shape(kappa)]
+    shape = np.broadcast_shapes(v.shape[:-1], w.shape[:-1], nrm.shape[:-1], vs.shape[:-1],
+                                mu_.shape, *(x.shape for x in parts), *given)  # fmt: skip
+    v, w, nrm, vs = (np.broadcast_to(x, (*shape, 3)) for x in (v, w, nrm, vs))
+    m, radius, inertia, zeta, mu_ = (np.broadcast_to(x, shape) for x in (*parts, mu_))
+    c = kernels.sphere_contact(v, w, nrm, radius, vs)
+    check("the contact point's normal velocity", c.normal_velocity, lambda x: x < 0,
+          "< 0 (the sphere must approach the surface)")  # fmt: skip
+    kappa_ = np.broadcast_to(_restitution(kappa, c.normal_velocity), shape)
+    return v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c
+
+
 def solve_sphere(
     body: Body, velocity: Any, spin: Any, *, mu: Any, kappa: Any,
     surface: Surface | None = None, tangential: Any = None,
@@ -297,24 +319,10 @@ def solve_sphere(
     one = _fast_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
     if one is not None:  # one impact of plain numbers: the same SphereImpact, in microseconds
         return one
-    surface = Surface() if surface is None else surface
-    if not isinstance(surface, Surface):
-        raise TypeError(f"surface must be a spinimpact.Surface, got {type(surface).__name__}")
-    v = vector3("velocity", velocity)
-    w = vector3("spin", spin)
-    mu_ = validated("mu", mu)
-    nrm, vs = surface.normal, surface.velocity
-    parts = [np.asarray(x) for x in (body.mass, body.radius, body.inertia, body.zeta)]
-    given = [] if callable(kappa) else [np.shape(kappa)]
-    shape = np.broadcast_shapes(v.shape[:-1], w.shape[:-1], nrm.shape[:-1], vs.shape[:-1],
-                                mu_.shape, *(x.shape for x in parts), *given)  # fmt: skip
-    v, w, nrm, vs = (np.broadcast_to(x, (*shape, 3)) for x in (v, w, nrm, vs))
-    m, radius, inertia, zeta, mu_ = (np.broadcast_to(x, shape) for x in (*parts, mu_))
-    c = kernels.sphere_contact(v, w, nrm, radius, vs)
+    v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c = _incidence(
+        body, velocity, spin, mu, kappa, surface
+    )
     cn, speed = c.normal_velocity, c.slip_speed
-    check("the contact point's normal velocity", cn, lambda x: x < 0,
-          "< 0 (the sphere must approach the surface)")  # fmt: skip
-    kappa_ = np.broadcast_to(_restitution(kappa, cn), shape)
     r = kernels.sphere_rebound(c, nrm, m, zeta, mu_, kappa_)
     v1 = v + r.impulse / m[..., None]
     w1 = w + kernels.sphere_spin_change(nrm, radius, inertia, r.friction)
