@@ -199,7 +199,7 @@ def test_a_compliance_law_bounces_as_solve_sphere_with_it():
     zero = flight(ball, "hard", tangential=Walton(beta0=0.0), **kw)  # Walton's 0: the rigid law
     np.testing.assert_allclose(zero.bounces.after.velocity, rigid.bounces.after.velocity,
                                rtol=1e-13, atol=1e-13)  # fmt: skip
-    for law in (Walton(beta0=0.4), Stronge(poisson_ratio=0.3)):
+    for law in (Walton(beta0=0.4), Walton(beta0=-1.0), Stronge(poisson_ratio=0.3)):
         f = flight(ball, "hard", tangential=law, **kw)
         assert f.tangential is law
         b = f.bounces
@@ -209,6 +209,10 @@ def test_a_compliance_law_bounces_as_solve_sphere_with_it():
         np.testing.assert_allclose(b.after.spin, imp.after.spin, rtol=1e-14, atol=1e-12)
         np.testing.assert_array_equal(b.regime, imp.regime)
     assert "slip-reversal" in set(flight(ball, "hard", tangential=Walton(0.4), **kw).bounces.regime)
+    # beta0 = -1 applies no friction: its bounces are mu = 0's, and labelled so
+    assert set(flight(ball, "hard", tangential=Walton(-1.0), **kw).bounces.regime) == {
+        "frictionless"
+    }
     with pytest.raises(TypeError, match="tangential must be"):
         flight(ball, "hard", tangential="walton", **kw)
 

@@ -53,7 +53,7 @@ class Flights(NamedTuple):
 def fly(
     position, velocity, spin, *, mass, radius, inertia, zeta, mu, kappa, rolling,
     aero: AeroConstants, max_bounces, t_stop, settle_speed, dt, record=False, rebound_slip=None,
-    wall=None,
+    frictionless=False, wall=None,
 ) -> Flights:  # fmt: skip
     """Fly, bounce and roll ``n`` balls (module docstring).
 
@@ -80,6 +80,8 @@ def fly(
     rebound_slip : callable, optional
         A tangential compliance law for the bounces (:func:`~spinimpact.core.ground.
         ground_bounce`).
+    frictionless : bool
+        That law applies no friction (its bounces are labelled ``frictionless``).
     wall : tuple, optional
         ``(n_w, C_w, mu_w, kappa_w)``: a vertical wall met where ``n_w . p = C_w`` (``n_w``
         its unit normal towards the ball), with its own friction and restitution. Balls
@@ -146,7 +148,8 @@ def fly(
         for sel, contact in ((~on_wall, ground), (on_wall, against)):
             if sel.any():
                 j, kj = hi[sel], k[sel]
-                b = ground_bounce(v[j], w[j], rebound_slip=rebound_slip, **contact)
+                b = ground_bounce(v[j], w[j], rebound_slip=rebound_slip,
+                                  frictionless=frictionless, **contact)  # fmt: skip
                 v[j], w[j] = b.velocity, b.spin
                 regime[j, kj], grips[j, kj] = b.regime, b.grips
         out["va"][hi, k], out["wa"][hi, k] = v[hi], w[hi]

@@ -49,7 +49,7 @@ class Roll(NamedTuple):
 
 
 def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
-                  rebound_slip=None, normal=None) -> GroundBounce:  # fmt: skip
+                  rebound_slip=None, frictionless=False, normal=None) -> GroundBounce:  # fmt: skip
     """The exact bounce of balls on the ground: :func:`spinimpact.solve_sphere`'s kernels.
 
     Parameters
@@ -66,6 +66,9 @@ def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
         along the slip before, as :func:`spinimpact.solve_sphere` with ``tangential=`` uses
         it. The regime codes are then :data:`spinimpact.core.compliance.COMPLIANT_REGIMES`'s
         and ``grips`` says the contact stuck.
+    frictionless : bool
+        The law applies no friction whatever ``mu`` (Walton's ``beta_0 = -1``): its bounces
+        are labelled ``frictionless``, as those with ``mu = 0``.
     normal : array_like, shape (3,), optional
         The plane's unit normal towards the ball (default ``e_y``: the ground; a wall).
     """
@@ -82,7 +85,7 @@ def ground_bounce(velocity, spin, *, mass, radius, inertia, zeta, mu, kappa,
         friction = np.asarray(f1)[..., None] * c.direction
         tau1 = impulse.total_impulse(mass, c.normal_velocity, kappa)
         impulse_vector = np.asarray(tau1)[..., None] * n + friction
-        code = compliance.compliant_regime_code(c.slip_speed, speed1, mu, grips)
+        code = compliance.compliant_regime_code(c.slip_speed, speed1, mu, grips, frictionless)
     v1 = velocity + impulse_vector / mass
     w1 = spin + sphere_spin_change(n, radius, inertia, friction)
     return GroundBounce(v1, w1, np.asarray(code), np.asarray(grips, dtype=bool))

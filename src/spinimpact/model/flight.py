@@ -247,7 +247,8 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         run = fly(p[sl], v[sl], w0[sl], mass=ball_.mass, radius=radius, inertia=body.inertia,
                   zeta=body.zeta, mu=ground_.mu, kappa=ground_.kappa, rolling=ground_.rolling,
                   aero=aero, max_bounces=nb, t_stop=t_stop, settle_speed=settle, dt=dt,
-                  record=record, rebound_slip=slip_law, wall=plane)  # fmt: skip
+                  record=record, rebound_slip=slip_law, wall=plane,
+                  frictionless=law is not None and law.frictionless)  # fmt: skip
         used = max(1, int(run.bounces.max(initial=0)))
         trimmed = run._replace(**{k: getattr(run, k)[:, :used] for k in _PER_BOUNCE})
         parts.append((trimmed, assemble_path(run.path, sl.stop - sl.start) if record else None))
