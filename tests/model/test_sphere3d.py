@@ -158,3 +158,25 @@ def test_a_ball_against_an_immovable_ball_is_the_ball_on_a_plane():
 def test_bad_input_is_named(call, error, message):
     with pytest.raises(error, match=re.escape(message)):
         call(Body.solid_sphere(mass=0.1, radius=0.02))
+
+
+def test_indexing_selects_the_body_of_each_impact():
+    """SphereImpact[i] and PairImpact[i] index an array-valued body with the impacts (the
+    Result base does it for every body field), so each selected impact carries the body it
+    was solved with and equals that impact solved alone."""
+    body = Body(mass=[1.0, 2.0], radius=0.1, gyration=[0.05, 0.2])
+    v = [[[1.0, -1.0, 0.0]], [[2.0, -1.0, 0.5]], [[3.0, -2.0, 0.0]]]
+    imp = solve_sphere(body, v, [0.0, 0.0, 10.0], mu=0.4, kappa=0.6)
+    assert imp.shape == (3, 2)
+    picked = imp[2, 1]
+    assert picked.body.mass == 2.0 and picked.body.gyration == 0.2
+    one = solve_sphere(Body(mass=2.0, radius=0.1, gyration=0.2), v[2][0], [0.0, 0.0, 10.0],
+                       mu=0.4, kappa=0.6)  # fmt: skip
+    assert picked.body.zeta == one.body.zeta
+    np.testing.assert_array_equal(picked.after.velocity, one.after.velocity)
+    assert list(imp[1].body.mass) == [1.0, 2.0]
+    ball = Body.solid_sphere(mass=1.0, radius=0.1)
+    pair = solve_pair(body, ball, velocity1=[[1.0, 0.0, 0.0]], spin1=[0.0, 0.0, 0.0],
+                      velocity2=[-1.0, 0.0, 0.0], spin2=[0.0, 0.0, 0.0],
+                      normal=[-1.0, 0.0, 0.0], mu=0.3, kappa=0.8)  # fmt: skip
+    assert pair.shape == (2,) and pair[1].ball1.mass == 2.0 and pair[1].ball2 is ball

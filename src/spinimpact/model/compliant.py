@@ -10,7 +10,7 @@ goes back to the body as in the rigid law, and the normal problem is the rigid o
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -106,9 +106,6 @@ class CompliantImpact(Result):
     newton_restitution: Array
 
     _shape_field = "tau1"
-
-    def __getitem__(self, index: Any) -> CompliantImpact:
-        return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
     def __repr__(self) -> str:
         if self.shape != ():
@@ -219,9 +216,6 @@ class CompliantSphereImpact(Result):
     gyrospin: Array
 
     _shape_field = "tau1"
-
-    def __getitem__(self, index: Any) -> CompliantSphereImpact:
-        return replace(super().__getitem__(index), body=self.body._at(self.shape, index))
 
     def __repr__(self) -> str:
         a = self.after

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -170,10 +170,6 @@ class Impact(Result):
     outcome: Outcome
 
     _shape_field = "tau1"
-
-    def __getitem__(self, index: Any) -> Impact:
-        imp = super().__getitem__(index)
-        return replace(imp, body=self.body._at(self.shape, index))
 
     def history(self, n: int = 201, *, tau: Any = None) -> History:
         """The impact process over the normal impulse ``tau`` (Figs. 2-5).

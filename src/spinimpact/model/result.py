@@ -137,6 +137,8 @@ class Result:
         for name, v in self._items():
             if isinstance(v, Result):
                 values[name] = v[index]
+            elif hasattr(v, "_at"):  # a Body whose parameters may be arrays: index them too
+                values[name] = v._at(self.shape, index)
             elif _is_array(v):
                 values[name] = freeze(np.asarray(v)[index])
             else:
