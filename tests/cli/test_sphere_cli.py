@@ -4,14 +4,12 @@ describe, the report, the files written, and bad input as one line with exit sta
 
 import json
 import math
-import signal
 import subprocess
 import sys
 
 import pytest
 
 from spinimpact import Body, Surface, solve_pair, solve_sphere
-from spinimpact.cli import main
 from spinimpact.cli._common import jsonable
 
 RPM = 2 * math.pi / 60  # rad/s per rpm, written out here independently of the package
@@ -21,25 +19,6 @@ BALL = Body.solid_sphere(mass=1.0, radius=0.1)  # the defaults: --mass 1 --radiu
 def run(*args):
     cmd = [sys.executable, "-m", "spinimpact", *map(str, args)]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-
-
-@pytest.fixture
-def cli(capsys):
-    """Run ``spinimpact ...`` in this process: (exit status, stdout, stderr)."""
-    previous = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
-
-    def call(*args):
-        try:
-            main(list(map(str, args)))
-            status = 0
-        except SystemExit as exit_:
-            status = exit_.code
-        out = capsys.readouterr()
-        return status, out.out, out.err
-
-    yield call
-    for s, handler in previous.items():
-        signal.signal(s, handler)
 
 
 def as_json(cli, *args):

@@ -21,7 +21,7 @@ from ..core import compliance as laws
 from ..core import sphere3d as kernels
 from .body import Body
 from .impact import State, _restitution
-from .result import Array, Result, freeze
+from .result import Array, Result, freeze, regime_counts
 from .sphere3d import (
     State3,
     Surface,
@@ -109,8 +109,7 @@ class CompliantImpact(Result):
 
     def __repr__(self) -> str:
         if self.shape != ():
-            names, counts = np.unique(self.regime, return_counts=True)
-            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+            summary = regime_counts(self.regime)
             return f"<CompliantImpact of shape {self.shape} ({self.law!r}): {summary}>"
         a = self.after
         return (

@@ -13,7 +13,7 @@ from .._validation import as_real_array, broadcast, check, validated, whole
 from . import _fast, _impact_fused, result
 from ._hooks import tangential_law
 from .body import Body
-from .result import Result, freeze, plain_repr
+from .result import Result, freeze, plain_repr, regime_counts
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
 
@@ -226,8 +226,7 @@ class Impact(Result):
 
     def __repr__(self) -> str:
         if self.shape != ():
-            names, counts = np.unique(self.regime, return_counts=True)
-            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+            summary = regime_counts(self.regime)
             return f"<Impact of shape {self.shape}: {summary}>"
         a = self.after
         return (

@@ -20,7 +20,7 @@ from ..core import planar as kernels
 from . import _fast_planar
 from .impact import State, _restitution
 from .planar_body import Pendulum, PlanarBody
-from .result import Array, Result, freeze
+from .result import Array, Result, freeze, regime_counts
 
 __all__ = [
     "PlanarImpact",
@@ -159,8 +159,7 @@ class PlanarImpact(Result):
 
     def __repr__(self) -> str:
         if self.shape != ():
-            names, counts = np.unique(self.regime, return_counts=True)
-            summary = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+            summary = regime_counts(self.regime)
             return f"<PlanarImpact ({self.law}) of shape {self.shape}: {summary}>"
         a = self.after
         return (

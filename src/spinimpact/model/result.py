@@ -54,6 +54,12 @@ def freeze(x: Any) -> Array:
     return arr[()]
 
 
+def regime_counts(regime: Any) -> str:
+    """``"name: count, ..."`` of the regimes of an array of impacts, for one-line reprs."""
+    names, counts = np.unique(regime, return_counts=True)
+    return ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
+
+
 def plain_repr(obj: Any) -> str:
     """``Name(field=value, ...)`` with NumPy scalars shown as the Python numbers and
     booleans they hold: ``vx=1.0`` and ``backward=False``, not ``np.float64(1.0)`` and

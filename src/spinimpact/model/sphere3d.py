@@ -22,7 +22,7 @@ from . import _fast_sphere
 from ._hooks import tangential_law
 from .body import Body
 from .impact import _restitution
-from .result import Array, Result, freeze
+from .result import Array, Result, freeze, regime_counts
 
 __all__ = ["Vector", "State3", "Surface", "SphereImpact", "SphereHistory", "solve_sphere"]
 
@@ -71,9 +71,7 @@ def _summary(imp: Result, name: str, text: Callable[[], str]) -> str:
     """The one-line repr of a 3D impact result: the regime counts of an array, or of one
     impact its regime and ``text()`` (its rebound; ``name`` may carry a law)."""
     if imp.shape != ():
-        names, counts = np.unique(imp.regime, return_counts=True)  # type: ignore[attr-defined]
-        kinds = ", ".join(f"{n}: {c}" for n, c in zip(names, counts, strict=True))
-        return f"<{name} of shape {imp.shape}: {kinds}>"
+        return f"<{name} of shape {imp.shape}: {regime_counts(imp.regime)}>"  # type: ignore[attr-defined]
     return f"<{name} {imp.regime}: after {text()}>"  # type: ignore[attr-defined]
 
 
