@@ -18,6 +18,7 @@ from .model.body import Body
 from .model.compliance import (
     CompliantImpact,
     CompliantSphereImpact,
+    MindlinDeresiewicz,
     Stronge,
     TangentialLaw,
     Walton,
@@ -68,6 +69,7 @@ __all__ = [
     "Body",
     "CompliantImpact",
     "CompliantSphereImpact",
+    "MindlinDeresiewicz",
     "Stronge",
     "TangentialLaw",
     "Walton",

@@ -12,6 +12,7 @@ from spinimpact import (
     Body,
     CompliantImpact,
     CompliantSphereImpact,
+    MindlinDeresiewicz,
     State,
     State3,
     Stronge,
@@ -249,7 +250,14 @@ def test_stronge_parameters():
             Stronge(**kwargs)
 
 
-@pytest.mark.parametrize("law", [Walton(beta0=0.3), Stronge(poisson_ratio=0.3)])
+@pytest.mark.parametrize(
+    "law",
+    [
+        Walton(beta0=0.3),
+        Stronge(poisson_ratio=0.3),
+        MindlinDeresiewicz(poisson_ratio=0.3, springs=16, steps=128),
+    ],
+)
 def test_indexing_selects_the_body_of_each_impact(law):
     """As Impact[i]: an array-valued body is broadcast and indexed with the impacts, so
     that each selected impact equals the one solved alone with its own body (zeta

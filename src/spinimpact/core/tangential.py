@@ -35,8 +35,26 @@ scaling) gives ``dE/dt = +F^2 |dk_t/dt|/(2 k_t^2)`` while unloading in stick,
 ``"total"`` (``F = -k_t xi``, the displacement times the current stiffness)
 gives ``dE/dt = +F^2 dk_t/dt/(2 k_t^2)`` while loading; either can return more
 energy than the spring stored. With a linear normal spring (``n = 1``) the
-stiffness is constant and the three coincide: the lumped two-spring model of
+stiffness is constant and the four rules coincide: the lumped two-spring model of
 Stronge (2000), conservative while sticking.
+
+The fourth rule, ``"history"``, is the exact elastic solution of a contact that sticks
+while its area grows and then shrinks (Mindlin & Deresiewicz 1953): the traction field is
+a superposition of flat-punch increments, one per contact radius, and while the area
+shrinks only the force beyond the loading history's at the same compression unloads with
+the stiffness,
+
+.. math:: \frac{dF}{dt} = -k_t u + \left(F - F_\mathrm{mem}(\delta)\right)
+   \frac{\min(\dot k_t, 0)}{k_t},
+
+with ``F_mem(delta)`` the force at the same compression while loading (equivalently
+``F = F_mem + k_t (xi - xi_mem)``), or the sliding field ``F/N_el`` times ``N_el(delta)``
+once the contact has slid. The springs' energy is then that of the traction field,
+``U_mem + F_mem D + k_t D^2/2`` with ``D = (F - F_mem)/k_t`` (``n F^2/((n + 1) k_t)`` for a
+sliding field), and it falls by ``|dk_t/dt| D^2/2`` while the contact sticks and shrinks.
+It is the no-micro-slip limit of :mod:`spinimpact.core.mdr` (which adds Coulomb's law at
+every point of the contact) and agrees with it as ``mu`` grows
+(``tests/core/test_mdr.py``).
 
 While the contact slips, ``F = sigma mu N`` (``sigma = +-1``); slip ends when the
 force the spring would take in stick no longer exceeds the cap, i.e. when the
@@ -58,23 +76,26 @@ References
    simulation of collisions in DEM-based granular flow codes", Chemical
    Engineering Science 59 (2004) 525-541.
 .. [4] W. J. Stronge, *Impact Mechanics*, Cambridge University Press (2000).
+.. [5] R. D. Mindlin, H. Deresiewicz, "Elastic spheres in contact under varying oblique
+   forces", Journal of Applied Mechanics 20 (1953) 327-344.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from typing import NamedTuple
 
 import numpy as np
 
 from .compliance import mindlin_stiffness_ratio as one_material_ratio
 from .events import Event, integrate_events
+from .spring_history import loading_history, sliding_history
+from .tangential_run import TangentialRun, sampled
 
 __all__ = ["SPRINGS", "TangentialRun", "integrate_tangential", "mindlin_stiffness_ratio"]
 
 #: The rules a stuck spring may follow when its stiffness changes (:func:`integrate_tangential`).
-SPRINGS = ("scaled", "incremental", "total")
+SPRINGS = ("scaled", "incremental", "total", "history")
 
 #: Most stick/slip switches one impact may take before the run is refused.
 MAX_SEGMENTS = 20000
@@ -122,35 +143,6 @@ def mindlin_stiffness_ratio(poisson_ratio, poisson_ratio_plane=None, youngs_rati
     return 4.0 * e_c / g_c
 
 
-class TangentialRun(NamedTuple):
-    """One impact with tangential compliance sampled in time
-    (:func:`integrate_tangential`); the arrays share one length and every
-    stick/slip switch is a sample."""
-
-    t: np.ndarray  #: s
-    compression: np.ndarray  #: delta, m
-    vx: np.ndarray  #: m/s
-    vy: np.ndarray  #: m/s
-    omega: np.ndarray  #: rad/s
-    tau: np.ndarray  #: normal impulse, N s
-    tangential_impulse: np.ndarray  #: N s
-    normal_force: np.ndarray  #: N
-    tangential_force: np.ndarray  #: F, N
-    spring_displacement: np.ndarray  #: xi, m (the tangential spring's displacement)
-    slip: np.ndarray  #: interface slip velocity w, m/s (0 while sticking)
-    contact_velocity: np.ndarray  #: u = vx + R omega, m/s
-    stuck: np.ndarray  #: bool
-    energy: np.ndarray  #: T + U_n + F^2/(2 k_t), J (never increases)
-    switches: np.ndarray  #: times of the stick/slip switches, s
-    t0: float  #: end of compression, s
-    t1: float  #: separation, s
-    tau0: float  #: normal impulse at t0, N s
-    compression_work: float  #: work of N up to t0, J
-    newton_restitution: float
-    poisson_restitution: float
-    energetic_restitution: float
-
-
 def integrate_tangential(
     mass: float, radius: float, inertia: float, mu: float, vx: float, vy: float, omega: float,
     *, stiffness: float, exponent: float, alpha: float = 0.0, damping: float = 0.0,
@@ -182,13 +174,16 @@ def integrate_tangential(
         Relative tolerance of the integrator (DOP853).
     samples : int
         Evenly spaced output times, to which every switch is added.
-    spring : {"scaled", "incremental", "total"}
+    spring : {"scaled", "incremental", "total", "history"}
         How the stuck spring follows a changing stiffness: ``"scaled"`` (default)
         ``dF/dt = -k_t u + F min(dk_t/dt, 0)/k_t``, the rule whose energy never grows;
         ``"incremental"`` ``dF/dt = -k_t u`` (the plain incremental update);
         ``"total"`` ``F = -k_t xi`` with ``xi`` the accumulated displacement, i.e.
         ``dF/dt = -k_t u + F (dk_t/dt)/k_t`` (codes that store the displacement and
-        multiply it by the current stiffness). The three coincide for ``n = 1``.
+        multiply it by the current stiffness); ``"history"`` the exact no-slip elastic
+        rule, ``dF/dt = -k_t u + (F - F_mem(delta)) min(dk_t/dt, 0)/k_t`` with the
+        loading history's force ``F_mem`` (see the module's docstring). The four
+        coincide for ``n = 1``.
 
     Returns
     -------
@@ -207,7 +202,10 @@ def integrate_tangential(
         raise ValueError(f"spring must be one of {SPRINGS}, got {spring!r}")
     k, n, a, c, r = stiffness, exponent, 1.5 * alpha, damping, stiffness_ratio
     # the share of dk_t/dt (when < 0, when > 0) that rescales F: see ``spring``
-    down, up = {"scaled": (1.0, 0.0), "incremental": (0.0, 0.0), "total": (1.0, 1.0)}[spring]
+    down, up = {"scaled": (1.0, 0.0), "incremental": (0.0, 0.0), "total": (1.0, 1.0),
+                "history": (1.0, 0.0)}[spring]  # fmt: skip
+    history = spring == "history" and n != 1.0
+    memory = [None]  # spring="history": the force F_mem(delta) of the loading history
     speed = abs(vy)
     vscale = abs(vx) + speed + abs(radius * omega)
     fscale = mass * vscale / time_scale
@@ -229,6 +227,8 @@ def integrate_tangential(
         shape = dd * (1.0 + a * dd)
         n_rate = (shape + (a * d + (c / k if n == 1.0 else 0.0)) * ddd / n) / r
         rescale = (n - 1.0) / n * shape
+        if history:  # a sliding contact's field is its own memory: F - F_mem = 0
+            return big_n, n_rate, 0.0
         unload = (down * min(rescale, 0.0) + up * max(rescale, 0.0)) / r
         return big_n, n_rate, unload
 
@@ -240,7 +240,11 @@ def integrate_tangential(
             f_t = force
             rate = (n - 1.0) * (-vy_) / d if d > 0 and n != 1.0 else 0.0
             scale = down * min(rate, 0.0) + up * max(rate, 0.0)
-            df = -kt(d) * u + force * scale
+            if history:  # only the force beyond the loading history's unloads with k_t
+                held = memory[0](d) if memory[0] is not None else force  # loading: F_mem = F
+                df = -kt(d) * u + (force - held) * scale
+            else:
+                df = -kt(d) * u + force * scale
             dxi = u
         else:
             f_t = sigma * mu * big_n
@@ -293,7 +297,7 @@ def integrate_tangential(
             return rhs(tt, yy, stick, sigma)
 
         # v_y and N^(1/n) cross zero once (N >= 0 until separation): step ends suffice
-        events = [Event(compression_end, 1, terminal=False, watched=False),
+        events = [Event(compression_end, 1, terminal=history and math.isnan(t0), watched=False),
                   Event(separation, -1, watched=False, integrate_to=True)]  # fmt: skip
         if stick:
             events += [Event(cap_up, -1), Event(cap_down, -1)]
@@ -310,13 +314,21 @@ def integrate_tangential(
             t0, y0 = float(sol.t_events[0][0]), sol.y_events[0][0]
             tau0, work0 = float(y0[4]), float(y0[6])
         if sol.t > t:
-            segments.append((t, sol.t, sol.sol, stick, sigma))
+            segments.append((t, sol.t, sol.sol, stick, sigma, memory[0]))
             idle = 0
         else:  # a switch at the very start: neither stick nor slip can go on (tangency)
             idle += 1
         t, y = sol.t, sol.y.copy()
         if sol.t_events[1].size:
             break
+        if (
+            history
+            and memory[0] is None
+            and sol.t_events[0].size
+            and not any(e.size for e in sol.t_events[2:])
+        ):  # the end of compression: the loading history is complete
+            memory[0] = loading_history(segments[-1], y, k, n, r)
+            continue
         if idle > 4:
             raise RuntimeError(f"stick and slip both end at once at t = {t:g} s (a tangency "
                                "the event rules cannot resolve); try another rtol")  # fmt: skip
@@ -329,49 +341,8 @@ def integrate_tangential(
             y[7] = sigma * mu * big_n
         else:  # slip has stopped: the spring holds the cap force
             y[7] = sigma * mu * big_n
+            if history and memory[0] is not None:  # the sliding field is the new history
+                memory[0] = sliding_history(k, n, r, y[7], y[0])
         stick = not stick
-    return _sampled(segments, t, y, t0, tau0, work0, switches, samples, mass, radius, inertia,
-                    mu, vy, normal, kt, k, n, rates)  # fmt: skip
-
-
-def _sampled(segments, t_end, y_end, t0, tau0, work0, switches, samples, mass, radius,
-             inertia, mu, vy, normal, kt, k, n, rates) -> TangentialRun:  # fmt: skip
-    """Sample the dense solutions of the segments, the switches and ``t0`` included."""
-    from .restitution import restitution_by_definition
-
-    marks = [x for x in (t0, *switches) if x == x]
-    times = np.union1d(np.linspace(0.0, t_end, samples), marks)
-    out = np.empty((9, times.size))
-    stuck = np.empty(times.size, dtype=bool)
-    sig = np.zeros(times.size)
-    for i, (start, end, dense, stick, sigma) in enumerate(segments):
-        last = i == len(segments) - 1
-        sel = (times >= start) & ((times < end) | last)
-        out[:, sel] = dense(times[sel])
-        stuck[sel] = stick
-        sig[sel] = sigma
-    out[:, -1] = y_end
-    delta, vxs, vys, oms, tau, f, _wn, force, xi = out
-    big_n = np.array([max(normal(d, -v), 0.0) for d, v in zip(delta, vys, strict=True)])
-    force = np.where(stuck, force, sig * mu * big_n)
-    u = vxs + radius * oms
-    w = np.zeros(times.size)
-    for j in np.flatnonzero(~stuck):
-        _, n_rate, unload = rates(out[:, j])
-        w[j] = u[j] + sig[j] * mu * (n_rate - unload)
-    stiff = np.array([kt(d) for d in delta])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        spring_energy = np.where(stiff > 0, force**2 / (2.0 * stiff), 0.0)
-    energy = (0.5 * mass * (vxs**2 + vys**2) + 0.5 * inertia * oms**2
-              + k * np.maximum(delta, 0.0) ** (n + 1.0) / (n + 1.0) + spring_energy)  # fmt: skip
-    tau1 = float(y_end[4])
-    kappas = restitution_by_definition(vy, float(y_end[2]), tau0, tau1, work0,
-                                       float(y_end[6]) - work0)  # fmt: skip
-    return TangentialRun(
-        t=times, compression=delta, vx=vxs, vy=vys, omega=oms, tau=tau, tangential_impulse=f,
-        normal_force=big_n, tangential_force=force, spring_displacement=xi, slip=w,
-        contact_velocity=u, stuck=stuck, energy=energy, switches=np.asarray(switches),
-        t0=float(t0), t1=float(t_end), tau0=float(tau0), compression_work=float(work0),
-        newton_restitution=float(kappas.newton), poisson_restitution=float(kappas.poisson),
-        energetic_restitution=float(kappas.energetic),
-    )  # fmt: skip
+    return sampled(segments, t, y, t0, tau0, work0, switches, samples, mass, radius, inertia,
+                    mu, vy, normal, kt, k, n, rates, r if history else None)  # fmt: skip

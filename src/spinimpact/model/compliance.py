@@ -5,6 +5,9 @@
   friction ``mu`` and the tangential restitution ``beta0`` of sticking impacts).
 * :class:`Stronge`: Stronge's lumped-parameter contact, a normal and a tangential spring
   whose stiffness ratio follows from Poisson's ratio (Mindlin).
+* :class:`MindlinDeresiewicz`: Hertz contact, elastic in shear with Coulomb friction at
+  every point of the contact area (micro-slip), solved in time (the model closest to the
+  measured bounces of ``docs/validation.md``).
 
 Each gives the tangential restitution of the contact point ``beta = -u^+/u^-`` and reduces
 to the rigid law in its rigid limit (``beta0 = 0``; a tangential spring infinitely stiff).
@@ -24,8 +27,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from .._validation import scalar
+from .._validation import scalar, whole
 from ..core import compliance as kernels
+from ..core import mdr
 from .compliant import (
     CompliantImpact,
     CompliantSphereImpact,
@@ -33,7 +37,8 @@ from .compliant import (
     solve_sphere_compliant,
 )
 
-__all__ = ["TangentialLaw", "Walton", "Stronge", "CompliantImpact", "CompliantSphereImpact"]
+__all__ = ["TangentialLaw", "Walton", "Stronge", "MindlinDeresiewicz", "CompliantImpact",
+           "CompliantSphereImpact"]  # fmt: skip
 
 
 def _number(name: str, value: Any, low: float, high: float, rule: str) -> float:
@@ -41,6 +46,27 @@ def _number(name: str, value: Any, low: float, high: float, rule: str) -> float:
     if not low <= x <= high:
         raise ValueError(f"{name} must be {rule}, got {x!r}")
     return x
+
+
+def _set_ratio(law: Any) -> None:
+    """Validate a law's ``poisson_ratio`` or ``stiffness_ratio`` (one of the two) and set
+    ``stiffness_ratio`` (Mindlin's ``2(1 - nu)/(2 - nu)`` from Poisson's ratio)."""
+    name = type(law).__name__
+    nu, ratio = law.poisson_ratio, law.stiffness_ratio
+    if (nu is None) == (ratio is None):
+        raise TypeError(f"{name} takes one of poisson_ratio and stiffness_ratio, "
+                        f"got poisson_ratio={nu!r}, stiffness_ratio={ratio!r}")  # fmt: skip
+    if nu is not None:
+        nu = scalar("poisson_ratio", nu)
+        if not -1.0 < nu <= 0.5:
+            raise ValueError(f"poisson_ratio must be in (-1, 0.5], got {nu!r}")
+        object.__setattr__(law, "poisson_ratio", nu)
+        ratio = float(kernels.mindlin_stiffness_ratio(nu))
+    else:
+        ratio = _number("stiffness_ratio", ratio, 0.0, 1e12, "in (0, 1e12]")
+        if ratio == 0.0:
+            raise ValueError("stiffness_ratio must be in (0, 1e12], got 0.0")
+    object.__setattr__(law, "stiffness_ratio", ratio)
 
 
 @dataclass(frozen=True)
@@ -155,21 +181,7 @@ class Stronge(TangentialLaw):
     name: ClassVar[str] = "stronge"
 
     def __post_init__(self) -> None:
-        nu, ratio = self.poisson_ratio, self.stiffness_ratio
-        if (nu is None) == (ratio is None):
-            raise TypeError("Stronge takes one of poisson_ratio and stiffness_ratio, "
-                            f"got poisson_ratio={nu!r}, stiffness_ratio={ratio!r}")  # fmt: skip
-        if nu is not None:
-            nu = scalar("poisson_ratio", nu)
-            if not -1.0 < nu <= 0.5:
-                raise ValueError(f"poisson_ratio must be in (-1, 0.5], got {nu!r}")
-            object.__setattr__(self, "poisson_ratio", nu)
-            ratio = float(kernels.mindlin_stiffness_ratio(nu))
-        else:
-            ratio = _number("stiffness_ratio", ratio, 0.0, 1e12, "in (0, 1e12]")
-            if ratio == 0.0:
-                raise ValueError("stiffness_ratio must be in (0, 1e12], got 0.0")
-        object.__setattr__(self, "stiffness_ratio", ratio)
+        _set_ratio(self)
 
     def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
         out = kernels.stronge_restitution(slip, vy, zeta, mu, kappa, self.stiffness_ratio)
@@ -183,3 +195,75 @@ class Stronge(TangentialLaw):
         if self.poisson_ratio is not None:
             return f"Stronge(poisson_ratio={self.poisson_ratio!r})"
         return f"Stronge(stiffness_ratio={self.stiffness_ratio!r})"
+
+
+@dataclass(frozen=True)
+class MindlinDeresiewicz(TangentialLaw):
+    """Hertz normal contact with Mindlin-Deresiewicz tangential contact: elastic in shear,
+    Coulomb friction at every point of the contact area (micro-slip), under the impact's
+    whole loading history.
+
+    Give one of ``poisson_ratio`` and ``stiffness_ratio``.
+
+    Parameters
+    ----------
+    poisson_ratio : float, optional
+        Poisson's ratio ``nu`` in ``(-1, 0.5]``; Mindlin's ratio ``4 G*/E* = 2(1 - nu)/(2 - nu)``
+        (one material, or a rigid plane).
+    stiffness_ratio : float, optional
+        ``4 G*/E*`` directly (two materials:
+        :func:`spinimpact.core.tangential.mindlin_stiffness_ratio`).
+    springs, steps : int
+        Resolution: springs of the reduced contact and time steps of an impact (defaults
+        256 and 4096: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after).
+
+    Notes
+    -----
+    The normal force is Hertz's with Hunt-Crossley damping calibrated to ``kappa`` (Newton's
+    restitution, in ``(0, 1]``); with a Hertz contact the rebound depends on the incidence
+    through ratios only, so no modulus, size or speed is needed. The contact is solved in
+    time by the method of dimensionality reduction (Popov and Hess), which for a paraboloid
+    reproduces the half-space solutions of Cattaneo-Mindlin and Mindlin-Deresiewicz; see
+    :mod:`spinimpact.core.mdr`. The contact is taken to be circular (a sphere's); with a
+    non-spherical :class:`~spinimpact.Body` only its mass, inertia and contact radius enter.
+    Cost: about ``springs * steps`` operations per impact, impacts stepped together
+    (``python -m benchmarks.compliance`` measures it).
+
+    Examples
+    --------
+    >>> from spinimpact import Body, MindlinDeresiewicz, solve
+    >>> law = MindlinDeresiewicz(poisson_ratio=0.23)
+    >>> ball = Body.solid_sphere(mass=1.0, radius=0.1)
+    >>> imp = solve(ball, [0.05, 0.5], -1.0, 0.0, mu=0.3, kappa=1.0, tangential=law)
+    >>> imp.regime.tolist(), imp.tangential_restitution.round(2).tolist()
+    (['stick', 'slip-reversal'], [-0.27, 0.17])
+    """
+
+    poisson_ratio: float | None = None
+    stiffness_ratio: float | None = None
+    springs: int = 256
+    steps: int = 4096
+    name: ClassVar[str] = "mindlin-deresiewicz"
+
+    def __post_init__(self) -> None:
+        _set_ratio(self)
+        for key, low in (("springs", 1), ("steps", 8)):
+            value = whole(key, getattr(self, key))
+            if value < low:
+                raise ValueError(f"{key} must be at least {low}, got {value!r}")
+            object.__setattr__(self, key, value)
+
+    def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
+        return mdr.mdr_slip(slip, vy, zeta, mu, kappa, self.stiffness_ratio,
+                            springs=self.springs, steps=self.steps)  # fmt: skip
+
+    def __repr__(self) -> str:
+        which = ("poisson_ratio", self.poisson_ratio)
+        if self.poisson_ratio is None:
+            which = ("stiffness_ratio", self.stiffness_ratio)
+        extra = (
+            ""
+            if (self.springs, self.steps) == (256, 4096)
+            else (f", springs={self.springs}, steps={self.steps}")
+        )
+        return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
