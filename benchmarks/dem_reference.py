@@ -17,8 +17,9 @@ provenance and MFiX's parameters). This module
 * splits the difference into MFiX's step and MFiX's contact geometry with a fixed-step
   explicit integration (:mod:`benchmarks.dem_explicit`).
 
-With the sphere's mass, density and speed of the benchmark (Kharaz: 3.9 m/s); with
-restitution 1 the rebound depends only on the incidence angle, the stiffness ratio and mu.
+The runs use the benchmark's sphere (radius 2.5 mm, density 4000 kg/m^3) and speed
+(3.9 m/s); with restitution 1 the rebound depends only on the incidence angle, the
+stiffness ratio and mu (the stiffness, the mass and the speed set the time scale).
 
 Run ``python -m benchmarks.dem_reference`` to print the tables.
 """
