@@ -153,6 +153,22 @@ def linear_mindlin(angles, material=OXIDE, rtol=1e-10):
     return quantities(*(np.array(c, dtype=float) for c in zip(*rows, strict=True)))
 
 
+def mindlin_deresiewicz(angles, material=OXIDE):
+    """Hertz normal and Mindlin-Deresiewicz tangential contact with micro-slip
+    (:class:`spinimpact.MindlinDeresiewicz`, the method of dimensionality reduction), the
+    material's Poisson ratio; Hunt-Crossley damping giving kappa = 0.98."""
+    from spinimpact.model.compliance import MindlinDeresiewicz
+
+    law = MindlinDeresiewicz(poisson_ratio=material.poisson_ratio)
+    return impulse_law(angles, law, material)
+
+
+def history(angles, material=OXIDE):
+    """:func:`hertz_mindlin` with the history spring (no micro-slip; the force unloads
+    along its loading history, the exact no-slip elastic solution)."""
+    return hertz_mindlin(angles, material, spring="history")
+
+
 def incremental(angles, material=OXIDE):
     """:func:`hertz_mindlin` with the plain incremental spring."""
     return hertz_mindlin(angles, material, spring="incremental")
@@ -173,7 +189,19 @@ MODELS = (
     ("Hertz-Mindlin in time, incremental spring", incremental, OXIDE),
     ("Hertz-Mindlin in time, total spring", total, OXIDE),
     ("linear spring-dashpot + Mindlin ratio in time", linear_mindlin, OXIDE),
+    ("Hertz-Mindlin in time, history spring", history, OXIDE),
+    ("Hertz-Mindlin in time, history spring, alloy (nu = 0.33)", history, ALLOY),
+    ("Mindlin-Deresiewicz (micro-slip), nu = 0.23", mindlin_deresiewicz, OXIDE),
+    ("Mindlin-Deresiewicz (micro-slip), alloy (nu = 0.33)", mindlin_deresiewicz, ALLOY),
 )
+
+#: The models drawn in the figure (the table has them all).
+FIGURE_MODELS = tuple(m for m in MODELS if m[0] in (
+    "rigid", "Walton, beta0 = 0.33", "Stronge, nu = 0.23",
+    "Hertz-Mindlin in time, scaled spring", "Hertz-Mindlin in time, history spring",
+    "linear spring-dashpot + Mindlin ratio in time",
+    "Mindlin-Deresiewicz (micro-slip), nu = 0.23",
+    "Mindlin-Deresiewicz (micro-slip), alloy (nu = 0.33)"))  # fmt: skip
 
 #: The issue's DEM reference figures (Chung & Ooi 2011 curves against the measurement).
 DEM_REFERENCE = {"oxide": {"e_t": 0.013, "spin": 33.0}, "alloy": {"e_t": 0.0055, "spin": 28.0}}

@@ -31,20 +31,39 @@ def test_the_statements_about_the_table(rows):
     assert rigid["e_t"][1:] == pytest.approx((5 / 7 - 0.5964, 20.0845), abs=1e-4)
     assert rigid["spin"][1] == pytest.approx(577.0096 - 402.83, abs=0.01)
     assert round(rigid["e_t"][0], 3) == 0.054 and round(rigid["spin"][0]) == 73
-    # the goal: e_t not met by any model; spin met by Stronge, Walton and the linear model
+    # the goal: met by micro-slip with the oxide's literature parameters, in e_t and spin
+    best = "Mindlin-Deresiewicz (micro-slip), nu = 0.23"
     best_et = min(err["e_t"][0] for _, err in rows)
-    assert best_et > 0.013
-    assert best_et == e["Hertz-Mindlin in time, scaled spring, alloy (nu = 0.33)"]["e_t"][0]
-    for label in (
-        "Stronge, nu = 0.23",
-        "Walton, beta0 = 0.33",
-        "linear spring-dashpot + Mindlin ratio in time",
-    ):
-        assert e[label]["spin"][0] < 33
+    assert e[best]["e_t"][0] <= 0.013 and e[best]["spin"][0] <= 33
+    assert round(e[best]["e_t"][0], 4) == 0.0124 and round(e[best]["spin"][0]) == 23
+    assert e[best]["e_t"][1:] == pytest.approx((0.028, 9.6304), abs=5e-4)
+    assert best_et == pytest.approx(e[best]["e_t"][0], abs=2e-4)  # the history, alloy: 0.0125
+    # the alloy's reference figures (0.0055, 28) are not met by the alloy's parameters
+    alloy = e["Mindlin-Deresiewicz (micro-slip), alloy (nu = 0.33)"]
+    assert round(alloy["e_t"][0], 3) == 0.027 and round(alloy["spin"][0]) == 23
+    assert round(e["Hertz-Mindlin in time, history spring"]["e_t"][0], 3) == 0.022
+    # spin: every compliance model below 33 rad/s but the three older Hertz springs (oxide)
+    over = {label for label, err in rows if label != "rigid" and err["spin"][0] >= 33}
+    assert over == {"Hertz-Mindlin in time, scaled spring",
+                    "Hertz-Mindlin in time, incremental spring",
+                    "Hertz-Mindlin in time, total spring"}  # fmt: skip
     compliant = [err for label, err in rows if label != "rigid"]
-    assert all(0.49 <= round(err["rebound_angle"][0], 2) <= 0.75 for err in compliant)
-    # every compliance model's worst e_t is at the smallest angles (2 or 4 degrees)
-    assert all(err["e_t"][2] < 5 for err in compliant)
+    assert all(0.45 <= round(err["rebound_angle"][0], 2) <= 0.75 for err in compliant)
+
+
+def test_near_normal_incidence():
+    """The figures of 'What decides it': e_t at the 2 and 4 degree points."""
+    angles, values = kharaz.measured()["e_t"]
+    pick = angles < 5
+    assert values[pick].round(3).tolist() == [0.794, 0.745]
+    got = {
+        "scaled": kharaz.hertz_mindlin(angles[pick])["e_t"],
+        "history": kharaz.history(angles[pick])["e_t"],
+        "micro-slip": kharaz.mindlin_deresiewicz(angles[pick])["e_t"],
+    }
+    assert got["scaled"].round(3).tolist() == [0.881, 0.874]
+    assert got["history"].round(3).tolist() == [0.799, 0.799]
+    assert got["micro-slip"].round(3).tolist() == [0.778, 0.754]
 
 
 def test_between_9_and_60_degrees():
@@ -57,20 +76,25 @@ def test_between_9_and_60_degrees():
     assert round(worst["linear spring-dashpot + Mindlin ratio in time"], 3) == 0.012
     assert round(worst["Hertz-Mindlin in time, scaled spring"], 3) == 0.049
     assert round(worst["Hertz-Mindlin in time, scaled spring, alloy (nu = 0.33)"], 3) == 0.025
+    assert round(worst["Hertz-Mindlin in time, history spring"], 3) == 0.031
+    assert round(worst["Mindlin-Deresiewicz (micro-slip), nu = 0.23"], 3) == 0.028
     assert round(worst["rigid"], 3) == 0.118
 
 
 def test_the_smallest_angles_and_the_spring_rules():
     angles = np.array([2.0275, 3.9282, 20.0845, 30.2218, 49.5459])
     e_t = {label: model(angles, material)["e_t"] for label, model, material in kharaz.MODELS}
-    springs = [v for label, v in e_t.items() if label not in ("rigid", "Walton, beta0 = 0.33")]
+    # the springs that give back the stored strain as it is (all but history, micro-slip)
+    newer = ("history", "micro-slip")
+    springs = [v for label, v in e_t.items()
+               if label not in ("rigid", "Walton, beta0 = 0.33") and not any(
+                   word in label for word in newer)]  # fmt: skip
     assert all(0.82 <= x <= 1.005 for v in springs for x in v[:2])
     assert min(x for v in springs for x in v[:2]) < 0.83  # Stronge at 4 degrees: 0.827
     assert e_t["Walton, beta0 = 0.33"][:2] == pytest.approx([0.62, 0.62], abs=5e-4)
-    scaled = e_t["Hertz-Mindlin in time, scaled spring"][2:]
-    for rule in ("incremental", "total"):
-        other = e_t[f"Hertz-Mindlin in time, {rule} spring"][2:]
-        assert np.abs(other - scaled).max() < 0.011
+    rules = np.array([e_t[f"Hertz-Mindlin in time, {rule} spring"][2:]
+                      for rule in ("scaled", "incremental", "total", "history")])  # fmt: skip
+    assert round(float((rules.max(axis=0) - rules.min(axis=0)).max()), 3) == 0.019
 
 
 def test_small_angle_spring_rules_and_definitions():

@@ -73,13 +73,19 @@ def test_rigid_is_the_default_and_todays_report(capsys):
         (["--tangential", "walton", "--beta0", "1.5"], "beta0 must be in [-1, 1], got 1.5"),
         (["--beta0", "0.2"], "--beta0 applies to --tangential walton only"),
         (["--tangential", "walton", "--beta0", "0.2", "--poisson-ratio", "0.3"],
-         "--poisson-ratio applies to --tangential stronge only"),
+         "--poisson-ratio applies to --tangential stronge and mindlin-deresiewicz only"),
         (["--tangential", "stronge"], "needs one of --poisson-ratio and --stiffness-ratio"),
         (["--tangential", "stronge", "--poisson-ratio", "0.3", "--stiffness-ratio", "1"],
          "needs one of"),
         (["--tangential", "stronge", "--poisson-ratio", "0.7"], "poisson_ratio must be in"),
         (["--tangential", "stronge", "--stiffness-ratio", "-1"], "stiffness_ratio must be in"),
         (["--tangential", "bouncy"], "--tangential"),
+        (["--tangential", "mindlin-deresiewicz"],
+         "--tangential mindlin-deresiewicz needs one of --poisson-ratio and --stiffness-ratio"),
+        (["--tangential", "mindlin-deresiewicz", "--poisson-ratio", "0.6"],
+         "poisson_ratio must be in"),
+        (["--tangential", "mindlin-deresiewicz", "--poisson-ratio", "0.3", "--kappa", "0"],
+         "kappa must be in (0, 1]"),
     ],
 )  # fmt: skip
 def test_bad_options_are_one_line_and_exit_2(capsys, args, needle):
@@ -123,3 +129,18 @@ def test_sweep_bad_options_are_one_line(capsys, args, needle):
     status, out, err = run_main(capsys, "sweep", "--vx", "0:1:3", "--omega", "0", *args)
     assert status == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and needle in err
+
+
+def test_mindlin_deresiewicz_on_the_command_line(capsys):
+    """The law's report is solve(..., tangential=MindlinDeresiewicz(...))'s numbers."""
+    from spinimpact import Body, MindlinDeresiewicz, solve
+
+    status, out, _ = run_main(capsys, "solve", "--body", "solid-sphere", "--mass", "1",
+                              "--radius", "0.1", "--vx", "0.5", "--vy", "-1", "--omega", "0",
+                              "--mu", "0.3", "--kappa", "1", "--tangential",
+                              "mindlin-deresiewicz", "--poisson-ratio", "0.23")  # fmt: skip
+    assert status == 0
+    imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 0.5, -1.0, 0.0, mu=0.3, kappa=1.0,
+                tangential=MindlinDeresiewicz(poisson_ratio=0.23))  # fmt: skip
+    assert "MindlinDeresiewicz(poisson_ratio=0.23)" in out and "slip-reversal" in out
+    assert f"{float(imp.tangential_restitution):.6g}" in out

@@ -13,6 +13,7 @@ import numpy as np
 from ..model.compliance import (
     CompliantImpact,
     CompliantSphereImpact,
+    MindlinDeresiewicz,
     Stronge,
     TangentialLaw,
     Walton,
@@ -29,12 +30,13 @@ def tangential_options(function: Callable) -> Callable:
     options = [
         click.option(
             "--tangential",
-            type=click.Choice(["rigid", "walton", "stronge"]),
+            type=click.Choice(["rigid", "walton", "stronge", "mindlin-deresiewicz"]),
             default="rigid",
             show_default=True,
             help="Tangential law: the rigid law (the contact point leaves at rest when it "
-            "sticks), Walton's three-parameter model (--beta0) or Stronge's lumped "
-            "compliance (--poisson-ratio or --stiffness-ratio). See docs/compliance.md.",
+            "sticks), Walton's three-parameter model (--beta0), Stronge's lumped "
+            "compliance or Hertz-Mindlin-Deresiewicz contact with micro-slip (either with "
+            "--poisson-ratio or --stiffness-ratio). See docs/compliance.md.",
         ),
         click.option(
             "--beta0",
@@ -46,13 +48,15 @@ def tangential_options(function: Callable) -> Callable:
             "--poisson-ratio",
             type=float,
             default=None,
-            help="Stronge: Poisson's ratio in (-1, 0.5]; k_t/k_n = 2(1-nu)/(2-nu) (Mindlin).",
+            help="Stronge, mindlin-deresiewicz: Poisson's ratio in (-1, 0.5]; "
+            "k_t/k_n = 2(1-nu)/(2-nu) (Mindlin).",
         ),
         click.option(
             "--stiffness-ratio",
             type=float,
             default=None,
-            help="Stronge: tangential over normal contact stiffness k_t/k_n > 0.",
+            help="Stronge, mindlin-deresiewicz: tangential over normal contact stiffness "
+            "k_t/k_n > 0.",
         ),
     ]
     for option in reversed(options):
@@ -74,19 +78,22 @@ def tangential_law(o: dict[str, Any]) -> TangentialLaw | None:
     nu, ratio = o["poisson_ratio"], o["stiffness_ratio"]
     if kind != "walton" and beta0 is not None:
         raise click.UsageError("--beta0 applies to --tangential walton only")
-    if kind != "stronge" and (nu is not None or ratio is not None):
+    if kind not in ("stronge", "mindlin-deresiewicz") and (nu is not None or ratio is not None):
         which = "--poisson-ratio" if nu is not None else "--stiffness-ratio"
-        raise click.UsageError(f"{which} applies to --tangential stronge only")
+        raise click.UsageError(
+            f"{which} applies to --tangential stronge and mindlin-deresiewicz only"
+        )
     if kind == "walton":
         if beta0 is None:
             raise click.UsageError("--tangential walton needs --beta0 (in [-1, 1])")
         return Walton(beta0)
-    if kind == "stronge":
+    if kind in ("stronge", "mindlin-deresiewicz"):
         if (nu is None) == (ratio is None):
             raise click.UsageError(
-                "--tangential stronge needs one of --poisson-ratio and --stiffness-ratio"
+                f"--tangential {kind} needs one of --poisson-ratio and --stiffness-ratio"
             )
-        return Stronge(poisson_ratio=nu) if nu is not None else Stronge(stiffness_ratio=ratio)
+        law = Stronge if kind == "stronge" else MindlinDeresiewicz
+        return law(poisson_ratio=nu) if nu is not None else law(stiffness_ratio=ratio)
     return None
 
 

@@ -222,10 +222,11 @@ def _beta(sim: Any, rigid: Any) -> float:
 )
 @click.option(
     "--spring",
-    type=click.Choice(["scaled", "incremental", "total"]),
+    type=click.Choice(["scaled", "incremental", "total", "history"]),
     default=None,
     help="How the stuck mindlin spring follows its stiffness: scaled (default; its energy "
-    "never grows), incremental, or total (displacement times the current stiffness).",
+    "never grows), incremental, total (displacement times the current stiffness), or "
+    "history (the exact no-slip elastic rule: the force unloads along its loading history).",
 )
 @click.option("--plot", "plot_file", default=None, help="Write N(t), F(t) and the velocities here.")
 def simulate_command(plot_file: str | None, **o: Any) -> None:

@@ -3,100 +3,97 @@
 While a Hertz contact sticks and its area shrinks, only the force beyond the loading
 history's at the same compression unloads with the stiffness (the exact no-slip elastic
 solution, a superposition of flat-punch increments: Mindlin & Deresiewicz 1953). This
-module keeps that history, ``F_mem(delta)``, and the elastic energy of its traction field,
-``U_mem(delta)``: the field of a sliding contact below the compression where it last slid,
-the recorded stick phase of loading above it.
+module keeps that history: the tangential force ``F_mem(delta)`` at each compression while
+the contact was loaded (stuck or sliding), and the energy ``U_mem(delta)``, the integral of
+``F dF/k_t`` along it, which the field built by those increments holds.
 """
 
 from __future__ import annotations
 
+import bisect
 import math
 
 import numpy as np
 
-__all__ = ["History", "loading_history", "sliding_history", "history_energy"]
-
-
-def sliding_history(k, n, r, force, delta):
-    """:class:`History` of a contact sliding with force ``force`` at compression ``delta``:
-    the field ``F/N_el(delta)`` times ``N_el`` below it."""
-    return History(k, n, r, force / (k * delta**n) if delta > 0 else 0.0)
+__all__ = ["History", "loading_history", "history_energy"]
 
 
 class History:
-    """The loading history of spring="history" at one time: the force ``F_mem(delta)``
-    and the elastic energy ``U_mem(delta)`` of its traction field. Below ``split`` it is the
-    field of a sliding contact, ``F_mem = coef k delta^n`` (``coef = F/N_el`` when it last
-    slid) with ``U_mem = n F_mem^2/((n + 1) k_t)``; above, the last stick phase of loading, cubic
-    splines in ``s = sqrt(d_max - delta)`` (smooth through the end of compression)."""
+    """``F_mem(delta)`` and ``U_mem(delta)`` over the loading, as cubic splines in
+    ``s = sqrt(d_max - delta)`` (smooth through the end of compression), one per
+    stick or slip phase of the loading (the force has a kink at each switch). The force
+    is kept as its ratio to the elastic normal force ``k delta^n``, finite at touch."""
 
-    def __init__(self, k, n, r, coef, split=math.inf, spline=None, energy=None, d_max=0.0):
-        self.k, self.n, self.r, self.coef, self.split = k, n, r, coef, split
-        self.spline, self.energy_spline, self.d_max = spline, energy, d_max
+    def __init__(self, d_max, k, n, pieces):
+        self.d_max, self.k, self.n = d_max, k, n
+        self.pieces = pieces  # [(s_low, F/N_el spline, energy spline)], s_low increasing
+        self._lows = [p[0] for p in pieces]
 
-    def _sliding(self, d):
-        return self.coef * self.k * max(d, 0.0) ** self.n
+    def ratio(self, d):
+        """``F_mem/(k delta^n)``."""
+        s, (_low, ratio, _energy) = self._piece(d)
+        return float(ratio(s))
+
+    def _piece(self, d):
+        s = math.sqrt(max(self.d_max - d, 0.0))
+        return s, self.pieces[max(bisect.bisect_right(self._lows, s) - 1, 0)]
 
     def __call__(self, d):
-        if self.spline is None or d <= self.split:
-            return self._sliding(d)
-        return float(self.spline(math.sqrt(max(self.d_max - d, 0.0))))
+        if d <= 0.0:
+            return 0.0
+        return self.ratio(d) * self.k * d**self.n
 
     def energy(self, d):
-        """``U_mem(delta)``, J: the elastic energy of the history's traction field."""
-        if self.spline is None or d <= self.split:
-            stiff = self.r * self.n * self.k * max(d, 0.0) ** (self.n - 1.0)
-            share = self.n / (self.n + 1.0)  # the sliding field's: n F^2/((n + 1) k_t)
-            return share * self._sliding(d) ** 2 / stiff if stiff > 0 else 0.0
-        return float(self.energy_spline(math.sqrt(max(self.d_max - d, 0.0))))
+        """``U_mem(delta)``, J: the energy of the loading history's traction field."""
+        if d <= 0.0:
+            return 0.0
+        s, (_low, _force, energy) = self._piece(d)
+        return float(energy(s))
 
 
-def loading_history(segment, y_end, k, n, r, points=1025):
-    """:class:`History` of a loading ``segment`` (``(start, end, dense, stick, ...)``) at
-    its end, state ``y_end``: the sliding field if it slid, else its stick phase recorded."""
+def loading_history(segments, y_end, k, n, r, force_of, points=1025):
+    """:class:`History` of the loading ``segments`` (``(start, end, dense, stick, sigma)``,
+    from touch to the end of compression, state ``y_end``); ``force_of(y, stick, sigma)``
+    is the tangential force of a state (the spring's while stuck, ``sigma mu N`` while
+    sliding)."""
     from scipy.interpolate import CubicSpline
 
-    start, end, dense, stick = segment[:4]
     d_max = float(y_end[0])
-    if not stick:  # it ended sliding: the field is the sliding one
-        return History(k, n, r, y_end[7] / (k * d_max**n))
-    y_start = dense(start)
-    d_start, f_start = float(y_start[0]), float(y_start[7])
-    coef = f_start / (k * d_start**n) if d_start > 0 else 0.0
-    below = History(k, n, r, coef)
-    # Chebyshev points in time, clustered at both ends of the stick phase
-    times = start + (end - start) * 0.5 * (1.0 - np.cos(np.linspace(0.0, math.pi, points)))
-    d, force = dense(times)[[0, 7]]
-    stiff = r * n * k * np.maximum(d, 0.0) ** (n - 1.0)
-    # U = U(start) + integral of F dF / k_t along the phase (trapezoids)
-    rate = np.where(stiff > 0, force / np.where(stiff > 0, stiff, 1.0), 0.0)
-    steps = 0.5 * (rate[1:] + rate[:-1]) * np.diff(force)
-    energy = below.energy(d_start) + np.concatenate(([0.0], np.cumsum(steps)))
-    s = np.sqrt(np.maximum(d_max - d, 0.0))[::-1]
-    keep = np.concatenate(([True], np.diff(s) > 0))  # strictly increasing abscissae
-    s, force, energy = s[keep], force[::-1][keep], energy[::-1][keep]
-    return History(k, n, r, coef, d_start, CubicSpline(s, force), CubicSpline(s, energy),
-                    d_max)  # fmt: skip
+    runs, energy = [], 0.0
+    for start, end, dense, stick, sigma in segments:
+        # Chebyshev points in time, clustered at both ends of the phase
+        times = start + (end - start) * 0.5 * (1.0 - np.cos(np.linspace(0.0, math.pi, points)))
+        states = dense(times)
+        d = states[0]
+        force = np.array([force_of(states[:, i], stick, sigma) for i in range(points)])
+        stiff = r * n * k * np.maximum(d, 0.0) ** (n - 1.0)
+        rate = np.divide(force, stiff, out=np.zeros_like(force), where=stiff > 0)
+        cumulative = energy + np.concatenate(([0.0], np.cumsum(0.5 * (rate[1:] + rate[:-1])
+                                                                * np.diff(force))))  # fmt: skip
+        energy = float(cumulative[-1])
+        s = np.sqrt(np.maximum(d_max - d, 0.0))[::-1]
+        keep = np.concatenate(([True], np.diff(s) > 0))  # strictly increasing abscissae
+        keep &= (d > 0.0)[::-1]  # F/N_el is finite at touch, but 0/0 there
+        if keep.sum() >= 2:
+            q = (force / (k * np.where(d > 0.0, d, 1.0) ** n))[::-1]
+            s, q, u = s[keep], q[keep], cumulative[::-1][keep]
+            runs.append((float(s[0]), CubicSpline(s, q), CubicSpline(s, u)))
+    runs.sort(key=lambda p: p[0])
+    return History(d_max, k, n, runs)
 
 
-def history_energy(segments, times, delta, force, stiff, stuck, sliding, k, n, r):
-    """The springs' energy under spring="history": that of the traction field,
-    ``U_mem + F_mem D + k_t D^2/2`` with ``D = (F - F_mem)/k_t`` while it sticks
-    (the sliding field's ``n F^2/((n + 1) k_t)`` while it slides; ``sliding`` is
-    ``F^2/(2 k_t)``)."""
-    out = sliding * (2.0 * n / (n + 1.0))  # sliding: n F^2/((n + 1) k_t)
-    for i, segment in enumerate(segments):
-        start, end, dense, stick, _sigma, memory = segment
-        if not stick:
+def history_energy(memory, t0, times, delta, force, stiff):
+    """The springs' energy under spring="history": the traction field's, ``U_mem`` while
+    loading and ``U_mem + F_mem D + k_t D^2/2`` with ``D = (F - F_mem)/k_t`` after."""
+    out = np.zeros(times.size)
+    for j, (t, d, f, k_t) in enumerate(zip(times, delta, force, stiff, strict=True)):
+        if memory is None or d <= 0.0:
+            out[j] = f * f / (2.0 * k_t) if k_t > 0 else 0.0
             continue
-        last = i == len(segments) - 1
-        rows = np.flatnonzero((times >= start) & ((times < end) | last) & stuck)
-        if memory is None:  # loading: the phase's own record
-            record = loading_history(segment, dense(end), k, n, r)
-            out[rows] = [record.energy(d) for d in delta[rows]]
+        held, stored = memory(d), memory.energy(d)
+        if t <= t0:
+            out[j] = stored
             continue
-        for j in rows:
-            held = memory(delta[j])
-            d = (force[j] - held) / stiff[j] if stiff[j] > 0 else 0.0
-            out[j] = memory.energy(delta[j]) + held * d + 0.5 * stiff[j] * d * d
+        gap = (f - held) / k_t if k_t > 0 else 0.0
+        out[j] = stored + held * gap + 0.5 * k_t * gap * gap
     return out

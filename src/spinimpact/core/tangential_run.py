@@ -51,7 +51,7 @@ def sampled(segments, t_end, y_end, t0, tau0, work0, switches, samples, mass, ra
     out = np.empty((9, times.size))
     stuck = np.empty(times.size, dtype=bool)
     sig = np.zeros(times.size)
-    for i, (start, end, dense, stick, sigma, _memory) in enumerate(segments):
+    for i, (start, end, dense, stick, sigma) in enumerate(segments):
         last = i == len(segments) - 1
         sel = (times >= start) & ((times < end) | last)
         out[:, sel] = dense(times[sel])
@@ -64,14 +64,13 @@ def sampled(segments, t_end, y_end, t0, tau0, work0, switches, samples, mass, ra
     u = vxs + radius * oms
     w = np.zeros(times.size)
     for j in np.flatnonzero(~stuck):
-        _, n_rate, unload = rates(out[:, j])
+        _, n_rate, unload = rates(out[:, j], sig[j])
         w[j] = u[j] + sig[j] * mu * (n_rate - unload)
     stiff = np.array([kt(d) for d in delta])
     with np.errstate(divide="ignore", invalid="ignore"):
         spring_energy = np.where(stiff > 0, force**2 / (2.0 * stiff), 0.0)
-    if history is not None:  # the stiffness ratio of spring="history"
-        spring_energy = history_energy(segments, times, delta, force, stiff, stuck,
-                                        spring_energy, k, n, history)  # fmt: skip
+    if history is not None:  # spring="history": (its loading history, t0)
+        spring_energy = history_energy(history[0], history[1], times, delta, force, stiff)
     energy = (0.5 * mass * (vxs**2 + vys**2) + 0.5 * inertia * oms**2
               + k * np.maximum(delta, 0.0) ** (n + 1.0) / (n + 1.0) + spring_energy)  # fmt: skip
     tau1 = float(y_end[4])

@@ -77,7 +77,7 @@ def column_kinds(tangential: Any = None) -> dict[str, str]:
 
     Parameters
     ----------
-    tangential : Walton or Stronge, optional
+    tangential : Walton, Stronge or MindlinDeresiewicz, optional
         A tangential compliance law: the columns are then those of a
         :class:`~spinimpact.CompliantImpact` (:func:`result_columns` of it).
 

@@ -1,7 +1,8 @@
 """Sweeps of one of the paper's bodies under a tangential compliance law, in bounded memory.
 
 A :class:`CompliantSweep` is a :class:`~spinimpact.io.sweep.Sweep` (axes ``vx, vy, omega,
-mu, kappa``) with a law (:class:`~spinimpact.Walton` or :class:`~spinimpact.Stronge`).
+mu, kappa``) with a law (:class:`~spinimpact.Walton`, :class:`~spinimpact.Stronge` or
+:class:`~spinimpact.MindlinDeresiewicz`).
 :func:`~spinimpact.io.sweep.run_sweep` runs it as any sweep: chunk by chunk, to Parquet,
 CSV or ``.npy`` files, folding regime fractions and histograms on the fly, locally or on
 Dask. Each chunk is solved by ``solve(..., tangential=law)`` at once, so the fields are the
@@ -57,7 +58,8 @@ class CompliantSweep(Sweep):
     chunk_size : int
         Points evaluated at a time (default 100,000: a chunk is solved whole).
     tangential : TangentialLaw
-        The law (:class:`~spinimpact.Walton` or :class:`~spinimpact.Stronge`).
+        The law (:class:`~spinimpact.Walton`, :class:`~spinimpact.Stronge` or
+        :class:`~spinimpact.MindlinDeresiewicz`).
 
     Raises
     ------
@@ -84,8 +86,8 @@ class CompliantSweep(Sweep):
     def __post_init__(self) -> None:
         if not isinstance(self.tangential, TangentialLaw):
             raise TypeError(
-                "tangential must be a tangential compliance law (spinimpact.Walton or "
-                f"spinimpact.Stronge), got {self.tangential!r}"
+                "tangential must be a tangential compliance law (spinimpact.Walton, "
+                f"spinimpact.Stronge or spinimpact.MindlinDeresiewicz), got {self.tangential!r}"
             )
         super().__post_init__()
 

@@ -53,10 +53,13 @@ class Mindlin:
         ``r = k_t/k_n`` directly, ``> 0`` (instead of ``poisson_ratio``): ``k_t``
         is ``r`` times the normal law's elastic stiffness ``n k delta^{n-1}``.
         Large values approach the rigid (no tangential compliance) model.
-    spring : {"scaled", "incremental", "total"}
+    spring : {"scaled", "incremental", "total", "history"}
         How a stuck spring follows its changing stiffness
         (:func:`spinimpact.core.tangential.integrate_tangential`); ``"scaled"``
-        (default) is the rule whose energy never grows.
+        (default) is the simplest rule whose energy never grows; ``"history"`` the
+        exact no-slip elastic solution (the force unloads along its loading history;
+        its energy never grows either), the one closest to the measured bounces of
+        ``docs/validation.md`` among these rules.
 
     Notes
     -----
@@ -66,7 +69,8 @@ class Mindlin:
     spring is loaded incrementally and scaled down with the stiffness as the
     contact shrinks, the variant whose energy never grows
     (:mod:`spinimpact.core.tangential`). Mindlin-Deresiewicz micro-slip (a
-    stiffness that falls as ``|F|`` approaches ``mu N``) is not modelled.
+    stiffness that falls as ``|F|`` approaches ``mu N``) is not modelled here: the
+    impulse-space law :class:`~spinimpact.MindlinDeresiewicz` has it.
 
     Examples
     --------
