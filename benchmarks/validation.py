@@ -69,6 +69,43 @@ def kharaz_figure(models, path: Path) -> None:
     plt.close(fig)
 
 
+def microslip_figure(path: Path, angles=(2.0, 4.0, 10.0, 20.0)) -> None:
+    """One Kharaz impact in time at each of ``angles`` under micro-slip
+    (:func:`spinimpact.core.mdr.mdr_trace`): the friction force over Coulomb's bound and
+    the radius of the stuck core over the contact radius."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from spinimpact.core.mdr import mdr_trace
+    from spinimpact.core.tangential import mindlin_stiffness_ratio
+
+    r = float(mindlin_stiffness_ratio(kharaz.OXIDE.poisson_ratio))
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6), constrained_layout=True)
+    for angle in angles:
+        vx, vy = kharaz.incidence(angle)
+        tr = mdr_trace(vx, vy, 3.5, kharaz.MU, kharaz.KAPPA, r)
+        t = tr.t / tr.t[-1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(tr.normal_force > 0, -tr.tangential_force
+                             / (kharaz.MU * tr.normal_force), np.nan)  # fmt: skip
+        axes[0].plot(t, ratio, lw=1.6, label=f"{angle:g} deg")
+        axes[1].plot(t, tr.stick_radius, lw=1.6, label=f"{angle:g} deg")
+    axes[0].axhline(1.0, color="0.5", lw=0.8)
+    axes[0].axhline(-1.0, color="0.5", lw=0.8)
+    axes[0].set_ylabel(r"friction force over Coulomb's bound, $F/(\mu N)$")
+    axes[1].set_ylabel("radius of the stuck core over the contact radius, c/a")
+    for ax in axes:
+        ax.set_xlabel("time over the contact time")
+        ax.grid(alpha=0.3)
+        ax.legend(title="incidence", fontsize="small")
+    fig.suptitle("Kharaz et al.'s sphere under micro-slip (MindlinDeresiewicz, nu = 0.23, "
+                 "mu = 0.092, kappa = 0.98)", fontsize="medium")  # fmt: skip
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
 def mbf_figure(path: Path, poisson_ratio: float = 0.3, mu: float = 0.3) -> None:
     """Maw, Barber & Fawcett's normalized recoil angle against the normalized incidence
     angle, for a solid sphere with e = 1 (Chung & Ooi's Test 5 steel case)."""
@@ -147,7 +184,9 @@ def main(argv=None) -> int:
     drawn = [m for m in models if m in kharaz.FIGURE_MODELS]
     kharaz_figure(drawn, args.output / "validation_kharaz.png")
     mbf_figure(args.output / "validation_mbf.png")
-    print(f"wrote {args.output / 'validation_kharaz.png'} and validation_mbf.png")
+    microslip_figure(args.output / "validation_microslip.png")
+    print(f"wrote {args.output / 'validation_kharaz.png'}, validation_mbf.png and "
+          "validation_microslip.png")  # fmt: skip
     return 0
 
 
