@@ -5,7 +5,7 @@ Every figure is a ratio against ``solve`` without a law on the same impacts, mea
 the same run on the same machine (best of several runs each), never an absolute claim.
 Stronge's cost grows with the number of stick/slip changes, so it is measured at the
 literature's stiffness ratio (Poisson's ratio 0.3) and at a stiff contact (``r = 100``).
-MindlinDeresiewicz steps every impact in time (256 springs, 4096 steps by default), so it is
+MindlinDeresiewicz steps every impact in time (256 springs, 2048 steps by default), so it is
 measured on the first ``--n-mdr`` impacts only (default 1,000), against the rigid solve of
 those same impacts.
 """

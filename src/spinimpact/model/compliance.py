@@ -215,7 +215,7 @@ class MindlinDeresiewicz(TangentialLaw):
         :func:`spinimpact.core.tangential.mindlin_stiffness_ratio`).
     springs, steps : int
         Resolution: springs of the reduced contact and time steps of an impact (defaults
-        256 and 4096: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after).
+        256 and 2048: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after).
 
     Notes
     -----
@@ -242,7 +242,7 @@ class MindlinDeresiewicz(TangentialLaw):
     poisson_ratio: float | None = None
     stiffness_ratio: float | None = None
     springs: int = 256
-    steps: int = 4096
+    steps: int = 2048
     name: ClassVar[str] = "mindlin-deresiewicz"
 
     def __post_init__(self) -> None:
@@ -263,7 +263,7 @@ class MindlinDeresiewicz(TangentialLaw):
             which = ("stiffness_ratio", self.stiffness_ratio)
         extra = (
             ""
-            if (self.springs, self.steps) == (256, 4096)
+            if (self.springs, self.steps) == (256, 2048)
             else (f", springs={self.springs}, steps={self.steps}")
         )
         return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
