@@ -387,7 +387,7 @@ def test_no_slip_limit_matches_flat_punch_superposition():
     """mu -> infinity, kappa = 1: beta from this file's own integration of Mindlin and
     Deresiewicz's no-slip rule. nu = 0.23, zeta = 7/2: beta = -0.296203 (e_t = (5 - 2 beta)/7
     = 0.79892), the same at rtol 1e-9 and 1e-11 to 2e-9. mdr_slip, measured: 8.4e-4 off at 32
-    springs / 512 steps, 2.7e-4 at 64 / 1024, 4.3e-5 at 256 / 4096 (the default), 3.9e-6 at
+    springs / 512 steps, 2.7e-4 at 64 / 1024, 4.3e-5 at 256 / 4096, 3.9e-6 at
     512 / 8192; the springs' entry and exit times fall between steps, so the error is not
     monotone in either alone (tolerances 5e-4, 1e-4, 2e-5). integrate_tangential(
     spring="history") with mu = 1e6: 2e-11 off (tolerance 1e-8)."""
