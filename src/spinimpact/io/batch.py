@@ -77,6 +77,21 @@ class BatchSummary:
     kind: str = "paper"  #: what the file described: "paper", "planar" or "pendulum"
 
 
+def _law_kappa(chunk: Chunk, law: Any, kappa: np.ndarray, note: Callable) -> None:
+    """Note each row whose ``kappa`` the tangential ``law`` cannot take (its ``kappa_ok``;
+    ``MindlinDeresiewicz``: ``kappa > 0``), in the law's words (``kappa_rule``), naming
+    the row and column, or saying the value is the default's."""
+    if law is None:
+        return
+    refused = np.isfinite(kappa) & ~np.asarray(law.kappa_ok(kappa), dtype=bool)
+    column = "kappa" in chunk.columns
+    for i in np.flatnonzero(refused):
+        default = not column or bool(chunk.empty["kappa"][i])
+        where = chunk.where(i) if not column else chunk.where(i, "kappa")
+        name = "kappa (the default)" if default else "kappa"
+        note(i, f"{where}: {name} must be {law.kappa_rule}, got {float(kappa[i])!r}")
+
+
 def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
     """Solve one chunk. Returns (input numbers, results by column, error message per row)."""
     messages = chunk.messages.copy()
@@ -114,6 +129,7 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
     for i in np.flatnonzero(unknown):
         what = repr(str(preset[i])) if preset[i] else "nothing (no body and no gyration)"
         note(i, f"{chunk.where(i, 'body')}: must be one of {', '.join(PRESETS)}; got {what}")
+    _law_kappa(chunk, defaults.get("tangential"), values["kappa"], note)
     for i, message in sorted(found, key=lambda item: item[0]):
         if not messages[i]:
             messages[i] = message
