@@ -104,15 +104,20 @@ def test3() -> list[str]:
 
 
 def test4() -> list[str]:
-    """Test 4: Kharaz et al. (2001); Hertz-Mindlin in time beside the measurement."""
+    """Test 4: Kharaz et al. (2001); the Hertz models beside the measurement: micro-slip
+    (MindlinDeresiewicz), and Hertz-Mindlin in time with the scaled spring, each with the
+    oxide's and the alloy's Poisson ratio."""
     data = kharaz.measured()
     lines = []
     for key, (angles, values) in data.items():
-        oxide = kharaz.hertz_mindlin(angles, kharaz.OXIDE)[key]
-        alloy = kharaz.hertz_mindlin(angles, kharaz.ALLOY)[key]
-        lines.append(f"{key}: angle, measured, Hertz-Mindlin (oxide), (alloy)")
-        lines += [f"  {a:6.2f} {m:9.4f} {o:9.4f} {b:9.4f}"
-                  for a, m, o, b in zip(angles, values, oxide, alloy, strict=True)]  # fmt: skip
+        columns = [kharaz.mindlin_deresiewicz(angles, kharaz.OXIDE)[key],
+                   kharaz.mindlin_deresiewicz(angles, kharaz.ALLOY)[key],
+                   kharaz.hertz_mindlin(angles, kharaz.OXIDE)[key],
+                   kharaz.hertz_mindlin(angles, kharaz.ALLOY)[key]]  # fmt: skip
+        lines.append(f"{key}: angle, measured, micro-slip (oxide), (alloy), "
+                     "Hertz-Mindlin scaled spring (oxide), (alloy)")  # fmt: skip
+        lines += ["  " + " ".join([f"{a:6.2f}", f"{m:9.4f}"] + [f"{c[i]:9.4f}" for c in columns])
+                  for i, (a, m) in enumerate(zip(angles, values, strict=True))]  # fmt: skip
     return lines
 
 
@@ -171,7 +176,7 @@ def test5() -> list[str]:
     rigid law, exact where the contact slides throughout (``Psi_1 >= r zeta (1 + e)``,
     :func:`test5_threshold`)."""
     lines = ["Psi1 = r u-/(mu vn-), Psi2 = r u+/(mu vn+), r = 2(1-nu)/(2-nu); "
-             "spin = R w+/(mu vn-)",
+             "spin = R w+/(mu vn-); model: Hertz-Mindlin in time, scaled spring",
              f"{'material':15s} {'Psi1':>5s} {'Psi2(model)':>12s} {'Psi2(rigid)':>12s} "
              f"{'spin(model)':>12s} {'spin(rigid)':>12s}"]  # fmt: skip
     zeta = 3.5
@@ -200,7 +205,8 @@ def test6() -> list[str]:
     incidence tangent ``u-/vn-`` (the contact point's, not normalized by ``mu`` or ``r``);
     reference: the rigid law (``beta = chi - 1`` while sliding)."""
     lines = [
-        "tangents u-/vn-, u+/vn+ (not normalized); chi = zeta mu (1+e) vn-/u-; beta = -u+/u-",
+        "tangents u-/vn-, u+/vn+ (not normalized); chi = zeta mu (1+e) vn-/u-; beta = -u+/u-; "
+        "model: Hertz-Mindlin in time, scaled spring",
         f"{'material':16s} {'u-/vn-':>7s} {'chi':>6s} {'beta(model)':>12s} {'beta(rigid)':>11s} "
         f"{'u+/vn+(model)':>14s} {'u+/vn+(rigid)':>14s}",
     ]

@@ -114,9 +114,9 @@ def test_parquet_output_carries_the_columns_and_their_units(cli, tmp_path):
     "args, message",
     [
         (["--tangential", "walton"], "--tangential walton needs --beta0"),
-        (["--tangential", "stronge"], "needs one of --poisson-ratio and --stiffness-ratio"),
+        (["--tangential", "stronge"], "needs exactly one of --poisson-ratio and --stiffness-ratio"),
         (["--tangential", "stronge", "--poisson-ratio", "0.3", "--stiffness-ratio", "2"],
-         "needs one of --poisson-ratio and --stiffness-ratio"),
+         "needs exactly one of --poisson-ratio and --stiffness-ratio"),
         (["--beta0", "0.3"], "--beta0 applies to --tangential walton only"),
         (["--tangential", "stronge", "--beta0", "0.3"], "--beta0 applies to --tangential walton"),
         (["--tangential", "walton", "--beta0", "0.3", "--poisson-ratio", "0.3"],

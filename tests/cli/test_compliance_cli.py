@@ -74,18 +74,19 @@ def test_rigid_is_the_default_and_todays_report(capsys):
         (["--beta0", "0.2"], "--beta0 applies to --tangential walton only"),
         (["--tangential", "walton", "--beta0", "0.2", "--poisson-ratio", "0.3"],
          "--poisson-ratio applies to --tangential stronge and mindlin-deresiewicz only"),
-        (["--tangential", "stronge"], "needs one of --poisson-ratio and --stiffness-ratio"),
+        (["--tangential", "stronge"], "needs exactly one of --poisson-ratio and --stiffness-ratio"),
         (["--tangential", "stronge", "--poisson-ratio", "0.3", "--stiffness-ratio", "1"],
-         "needs one of"),
+         "needs exactly one of"),
         (["--tangential", "stronge", "--poisson-ratio", "0.7"], "poisson_ratio must be in"),
         (["--tangential", "stronge", "--stiffness-ratio", "-1"], "stiffness_ratio must be in"),
         (["--tangential", "bouncy"], "--tangential"),
         (["--tangential", "mindlin-deresiewicz"],
-         "--tangential mindlin-deresiewicz needs one of --poisson-ratio and --stiffness-ratio"),
+         "--tangential mindlin-deresiewicz needs exactly one of --poisson-ratio and "
+         "--stiffness-ratio"),
         (["--tangential", "mindlin-deresiewicz", "--poisson-ratio", "0.6"],
          "poisson_ratio must be in"),
         (["--tangential", "mindlin-deresiewicz", "--poisson-ratio", "0.3", "--kappa", "0"],
-         "kappa must be in (0, 1]"),
+         "kappa must be > 0 under MindlinDeresiewicz"),
     ],
 )  # fmt: skip
 def test_bad_options_are_one_line_and_exit_2(capsys, args, needle):
@@ -120,7 +121,7 @@ def test_sweep_with_a_law_writes_the_library_numbers(tmp_path):
     [
         (["--planar", "rod", "--tangential", "walton", "--beta0", "0.2"],
          "--tangential walton does not apply to --planar sweeps"),
-        (["--tangential", "stronge"], "needs one of --poisson-ratio and --stiffness-ratio"),
+        (["--tangential", "stronge"], "needs exactly one of --poisson-ratio and --stiffness-ratio"),
         (["--tangential", "walton", "--beta0", "0.2", "--fields", "tau_star"],
          "fields must be among"),
     ],

@@ -72,7 +72,7 @@ def test_json_has_the_law_and_every_field(capsys):
         (("--tangential", "walton"), "--tangential walton needs --beta0"),
         (("--beta0", "0.3"), "--beta0 applies to --tangential walton only"),
         (("--tangential", "walton", "--beta0", "2"), "beta0 must be in [-1, 1], got 2.0"),
-        (("--tangential", "stronge"), "needs one of --poisson-ratio and --stiffness-ratio"),
+        (("--tangential", "stronge"), "needs exactly one of --poisson-ratio and --stiffness-ratio"),
         (("--tangential", "walton", "--beta0", "0.3", "--poisson-ratio", "0.3"),
          "--poisson-ratio applies to --tangential stronge and mindlin-deresiewicz only"),
         (("--tangential", "stronge", "--poisson-ratio", "0.6"), "poisson_ratio must be in"),

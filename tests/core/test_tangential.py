@@ -286,3 +286,9 @@ def test_the_history_rule_differs_only_while_the_contact_shrinks():
     e_t = {s: r.vx[-1] / 0.01 for s, r in runs.items()}
     assert e_t["history"] == pytest.approx(0.799, abs=1e-3)
     assert e_t["scaled"] == pytest.approx(0.882, abs=1e-3)
+
+
+def test_the_history_rule_without_friction():
+    """mu = 0: no tangential force at all, as with the other rules (it divided by mu)."""
+    run = _history(3.0, -4.0, 10.0, 0.0, 0.87)
+    assert run.vx[-1] == 3.0 and run.omega[-1] == 10.0

@@ -70,13 +70,20 @@ def test_parameters_and_errors():
         with pytest.raises(error, match=message):
             MindlinDeresiewicz(**kwargs)
     ball = Body.solid_sphere(mass=1.0, radius=0.1)
-    with pytest.raises(ValueError, match=r"kappa must be in \(0, 1\].*got 0.0"):
-        solve(
-            ball,
-            1.0,
-            -1.0,
-            0.0,
-            mu=0.3,
-            kappa=0.0,
-            tangential=MindlinDeresiewicz(poisson_ratio=0.3, **FAST),
-        )
+    law = MindlinDeresiewicz(poisson_ratio=0.3, **FAST)
+    with pytest.raises(ValueError, match=r"kappa must be > 0 under MindlinDeresiewicz.*got "
+                       r"0.0 \(first offending index 1\)"):  # fmt: skip
+        solve(ball, 1.0, -1.0, 0.0, mu=0.3, kappa=np.array([0.9, 0.0]), tangential=law)
+    with pytest.raises(ValueError, match="kappa must be > 0 under MindlinDeresiewicz"):
+        solve_sphere(ball, [1.0, -1.0, 0.0], [0.0, 0.0, 0.0], mu=0.3, kappa=0.0, tangential=law)
+
+
+def test_limits_of_the_resolution_and_the_class_itself():
+    ball = Body.solid_sphere(mass=1.0, radius=0.1)
+    stiff = MindlinDeresiewicz(stiffness_ratio=1e5)  # a period is 1/340 of the contact
+    with pytest.raises(ValueError, match=r"steps = 2048 do not resolve .* use steps >= 60"):
+        solve(ball, 0.5, -1.0, 0.0, mu=0.3, kappa=1.0, tangential=stiff)
+    with pytest.raises(ValueError, match="springs \\* steps must be at most 16777216"):
+        MindlinDeresiewicz(poisson_ratio=0.2, steps=10**9)
+    with pytest.raises(TypeError, match="an instance such as MindlinDeresiewicz"):
+        solve(ball, 1.0, -3.0, 0.0, mu=0.1, kappa=0.9, tangential=MindlinDeresiewicz)

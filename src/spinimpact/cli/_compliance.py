@@ -90,7 +90,7 @@ def tangential_law(o: dict[str, Any]) -> TangentialLaw | None:
     if kind in ("stronge", "mindlin-deresiewicz"):
         if (nu is None) == (ratio is None):
             raise click.UsageError(
-                f"--tangential {kind} needs one of --poisson-ratio and --stiffness-ratio"
+                f"--tangential {kind} needs exactly one of --poisson-ratio and --stiffness-ratio"
             )
         law = Stronge if kind == "stronge" else MindlinDeresiewicz
         return law(poisson_ratio=nu) if nu is not None else law(stiffness_ratio=ratio)

@@ -93,7 +93,7 @@ def batch_command(
     Pendulums on a pivot: mass, inertia, gx, gy, px, py, omega (centre of mass and
       contact point from the pivot, m), optionally mu, kappa, law.
 
-    --tangential walton|stronge: the paper's bodies under a tangential compliance law
+    --tangential walton|stronge|mindlin-deresiewicz: the paper's bodies under a law
       (solve(..., tangential=law)); the result fields are then CompliantImpact's.
 
     Writes the input columns plus every result field that is not an input (for planar

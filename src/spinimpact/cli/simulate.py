@@ -133,9 +133,12 @@ def _print_tangential(sim: Any) -> None:
     from ..viz.tables import duration
 
     rigid = sim.rigid()
-    click.echo(f"Hertz-Mindlin impact with {sim.contact!r}, k_t/k_n = {sim.stiffness_ratio:.6g}")
+    spring = sim.tangential.spring
+    click.echo(f"impact with {sim.contact!r} and a Mindlin spring ({spring} rule), "
+               f"k_t/k_n = {sim.stiffness_ratio:.6g}")  # fmt: skip
+    switches = f"{sim.switches} stick/slip switch{'' if sim.switches == 1 else 'es'}"
     click.echo(f"contact duration {duration(sim.contact_duration)}, peak normal force "
-               f"{sim.peak_force:.6g} N, {sim.switches} stick/slip switches")  # fmt: skip
+               f"{sim.peak_force:.6g} N, {switches}")  # fmt: skip
     click.echo(f"{'':24s}{'compliant':>14s}{'rigid':>14s}")
     rows = (("vx+ (m/s)", sim.after.vx, rigid.after.vx),
             ("vy+ (m/s)", sim.after.vy, rigid.after.vy),

@@ -54,8 +54,9 @@ def solve_command(as_json: bool, **options: Any) -> None:
       4.3, 3.6); rebound (eqs. 3.4, 4.13, 4.16); energy (eqs. 5.1-5.10); works
       (eqs. 6.1-6.11, ratio 6.15-6.19); mu_hat = f1/tau1 (eqs. 7.4, 7.7-7.9);
       least kinetic energy (eqs. 8.1-8.6); Whittaker's particle (eq. 8.7).
-      --tangential walton|stronge: the contact point's tangential restitution
-      beta = -u+/u- of Walton's or Stronge's law (docs/compliance.md).
+      --tangential walton|stronge|mindlin-deresiewicz: the contact point's tangential
+      restitution beta = -u+/u- of Walton's law, Stronge's, or Hertz contact with
+      Mindlin-Deresiewicz micro-slip (docs/compliance.md).
     """
     law = tangential_law(options)
     if law is not None:

@@ -285,8 +285,9 @@ def sphere_command(ctx: click.Context, **o: Any) -> None:
     --batch FILE --output OUT: columns vx,vy,vz,wx,wy,wz, optionally mu, kappa, mass,
       radius, gyration, body, normal_x..z, surface_velocity_x..z (pairs of balls:
       spinimpact pair --batch).
-    --tangential walton|stronge: the contact point's tangential restitution of Walton's or
-      Stronge's law along the slip (docs/compliance.md); a plain report or --json.
+    --tangential walton|stronge|mindlin-deresiewicz: the contact point's tangential
+      restitution of Walton's, Stronge's or the micro-slip law along the slip
+      (docs/compliance.md); a plain report or --json.
     """
     law = tangential_law(o)
     rigid_only = [n for n, k in (("--batch", "batch"), ("--plot", "plot"),

@@ -231,7 +231,7 @@ def integrate_tangential(
         n_rate = (shape + (a * d + (c / k if n == 1.0 else 0.0)) * ddd / n) / r
         rescale = (n - 1.0) / n * shape
         unload = (down * min(rescale, 0.0) + up * max(rescale, 0.0)) / r
-        if history and memory[0] is not None and sigma and dd < 0.0 and d > 0.0:
+        if history and memory[0] is not None and sigma and mu > 0.0 and dd < 0.0 and d > 0.0:
             # F_mem min(dk_t/dt, 0)/(sigma mu k_t): that part of the force does not unload
             unload -= memory[0].ratio(d) / (sigma * mu) * (n - 1.0) / n * dd / r
         return big_n, n_rate, unload

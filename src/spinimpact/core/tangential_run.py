@@ -30,7 +30,7 @@ class TangentialRun(NamedTuple):
     slip: np.ndarray  #: interface slip velocity w, m/s (0 while sticking)
     contact_velocity: np.ndarray  #: u = vx + R omega, m/s
     stuck: np.ndarray  #: bool
-    energy: np.ndarray  #: T + U_n + F^2/(2 k_t), J (never increases)
+    energy: np.ndarray  #: T + U_n + F^2/(2 k_t) (history: the field's), J; never increases
     switches: np.ndarray  #: times of the stick/slip switches, s
     t0: float  #: end of compression, s
     t1: float  #: separation, s

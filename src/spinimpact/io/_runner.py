@@ -1,11 +1,12 @@
 """Running a sweep's chunks: in order, locally or on a Dask cluster, in bounded memory;
 what a sweep will cost before it starts (:func:`estimate`); the reductions it folds.
 
-:func:`estimate` runs a trial chunk of the sweep itself (its first points, at most
-:data:`TRIAL_POINTS`), timed and weighed with :mod:`tracemalloc`, and scales it to the
-whole sweep: the points, the time on this machine, the memory a chunk holds at its peak
-and the bytes of the output, beside the memory available and the space free on the
-output's disk. :meth:`SweepEstimate.problems` names what cannot fit.
+:func:`estimate` runs trial chunks of the sweep itself (its first points, grown only
+while they are cheap: :mod:`spinimpact.io._trials`), timed, and weighs one of at most
+:data:`TRIAL_POINTS` with :mod:`tracemalloc`; it scales them to the whole sweep: the
+points, the time on this machine, the memory a chunk holds at its peak and the bytes of
+the output, beside the memory available and the space free on the output's disk.
+:meth:`SweepEstimate.problems` names what cannot fit.
 """
 
 from __future__ import annotations
@@ -14,7 +15,6 @@ import dataclasses
 import math
 import os
 import shutil
-import time
 import tracemalloc
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -25,6 +25,7 @@ import numpy as np
 
 from .. import core
 from .._validation import require
+from . import _trials
 from ._fields import DEFAULT_FIELDS, TableColumns, npy_encoded_size, plan
 
 __all__ = [
@@ -41,7 +42,8 @@ __all__ = [
     "estimate_sweep",
 ]
 
-#: Points of the smaller trial chunk of an estimate (fewer if the sweep's chunks are smaller).
+#: Most points of the trial chunk an estimate weighs (memory and output), and a sixteenth of
+#: the most it times (fewer if the sweep's chunks are smaller or its points slow).
 TRIAL_POINTS = 16_384
 #: Resident memory of a run over the bytes it allocates: the allocators keep memory freed
 #: between chunks (measured 1.0 to 2.2 for 1e7-point sweeps to nothing, .npy and Parquet).
@@ -213,6 +215,13 @@ class SweepEstimate:
     output_bytes: int  #: bytes of the output (0 without one)
     available_memory: int | None  #: :func:`available_memory`, when estimated
     free_disk: int | None  #: bytes free where the output goes, ``None`` without one
+    trial_points: tuple[int, ...] = ()  #: points of each trial timed (the sweep's first)
+    weighed_points: int = 0  #: points of the trial weighed (memory and output)
+
+    @property
+    def measured_points(self) -> int:
+        """The most points of a trial: the estimate is measured on the sweep's first so many."""
+        return max(self.trial_points, default=self.weighed_points)
 
     def problems(self, max_seconds: float | None = None) -> list[str]:
         """What cannot fit: the memory of a chunk, the output on its disk, and (if given)
@@ -236,9 +245,11 @@ class SweepEstimate:
     def __str__(self) -> str:
         output = f", {size_text(self.output_bytes)} of output" if self.output_bytes else ""
         took = "" if math.isnan(self.seconds) else f"about {duration_text(self.seconds)} here, "
+        measured = self.measured_points
+        on = f" (measured on the sweep's first {measured:,} points)" if measured else ""
         return (
             f"{self.points:,} points in {self.chunks:,} chunk{'s' * (self.chunks != 1)}: "
-            f"{took}{size_text(self.chunk_memory)} of memory a chunk{output}"
+            f"{took}{size_text(self.chunk_memory)} of memory a chunk{output}{on}"
         )
 
 
@@ -254,16 +265,6 @@ def _trial(sweep: Any, m: int, work: tuple, encode: Callable | None) -> Callable
     return run
 
 
-def _seconds(run: Callable[[], int], runs: int = 2) -> float:
-    """The shortest of ``runs`` timings of ``run()`` (the least disturbed by other work)."""
-    best = math.inf
-    for _ in range(runs):
-        start = time.perf_counter()
-        run()
-        best = min(best, time.perf_counter() - start)
-    return best
-
-
 def estimate(
     sweep: Any,
     columns: tuple[str, ...] = (),
@@ -272,14 +273,18 @@ def estimate(
     encode: Callable[[dict], tuple[int, int]] | None = None,
     timed: bool = True,
 ) -> SweepEstimate:
-    """Weigh and time trial chunks of ``sweep`` and scale them to the whole sweep.
+    """Time and weigh trial chunks of ``sweep`` and scale them to the whole sweep.
 
-    A chunk's time is taken as ``a + b * points`` (a cost per chunk, such as starting
-    threads, and a cost per point that grows once the arrays leave the caches), fitted
-    to trials of :data:`TRIAL_POINTS` and 16 times as many points (no more than a chunk);
-    its memory as proportional to its points, from the first trial under
-    :mod:`tracemalloc` (and pyarrow's own allocator), times :data:`RESIDENT_FACTOR`. A
-    small trial runs first, so compiling is not counted.
+    The trials are the sweep's first points, from 64 up to 16 times :data:`TRIAL_POINTS`
+    (no more than a chunk), growing while they are cheap: the trials take a tenth of
+    the sweep's own time, between 0.05 and 2 s (:mod:`spinimpact.io._trials`), so a
+    sweep of slow points is measured on fewer. A chunk's time is taken as ``a + b *
+    points`` (a cost per chunk, such as starting threads, and a cost per point that
+    grows once the arrays leave the caches), fitted to the two largest trials (or
+    proportional to the one); its memory as proportional to its points, from the largest
+    trial of at most :data:`TRIAL_POINTS` run again under :mod:`tracemalloc` (and
+    pyarrow's own allocator), times :data:`RESIDENT_FACTOR`. A small trial runs first,
+    so compiling is not counted.
 
     Parameters
     ----------
@@ -294,39 +299,48 @@ def estimate(
         would be, in memory (their size and time are measured), and the memory it took
         outside Python's allocator (pyarrow's buffers).
     timed : bool
-        Whether to time the sweep (``seconds`` is NaN otherwise).
+        Whether to time the sweep (``seconds`` is NaN otherwise; the trials then grow
+        to :data:`TRIAL_POINTS` at most, each run once).
     """
     chunk_points = min(sweep.chunk_size, sweep.size)
     work = (columns, histogram)
-    _trial(sweep, min(chunk_points, 64), work, encode)()  # compiles what compiles on first use
-    sizes = sorted({min(chunk_points, TRIAL_POINTS), min(chunk_points, 16 * TRIAL_POINTS)})
-    first = _trial(sweep, sizes[0], work, encode)
+
+    def trial(m: int) -> Callable:
+        return _trial(sweep, m, work, encode)
+
+    trial(min(chunk_points, _trials.FIRST))()  # compiles what compiles on first use
+    top = 16 * TRIAL_POINTS if timed else TRIAL_POINTS
+    sizes = _trials.ladder(chunk_points, top)
+    trials = _trials.grow(trial, sizes, 2 if timed else 1, TRIAL_POINTS, sweep.size)
+    weighed = max(m for m in trials.points if m <= TRIAL_POINTS)
     tracing = tracemalloc.is_tracing()
     if not tracing:
         tracemalloc.start()
     tracemalloc.reset_peak()
     base = tracemalloc.get_traced_memory()[0]
-    encoded, outside = first()
+    encoded, outside = trial(weighed)()
     peak = tracemalloc.get_traced_memory()[1] - base + outside
     if not tracing:
         tracemalloc.stop()
     seconds = math.nan
     if timed:
-        times = [_seconds(first), *(_seconds(_trial(sweep, m, work, encode)) for m in sizes[1:])]
-        per_point = times[-1] / sizes[-1]
-        if len(sizes) == 2 and times[1] > times[0]:
-            per_point = (times[1] - times[0]) / (sizes[1] - sizes[0])
-        per_chunk = max(times[-1] - per_point * sizes[-1], 0.0)
+        points, times = trials.points[-2:], trials.seconds[-2:]
+        per_point = times[-1] / points[-1]
+        if len(points) == 2 and times[1] > times[0]:
+            per_point = (times[1] - times[0]) / (points[1] - points[0])
+        per_chunk = max(times[-1] - per_point * points[-1], 0.0)
         seconds = sweep.chunks * per_chunk + sweep.size * per_point
     return SweepEstimate(
         points=sweep.size,
         chunks=sweep.chunks,
         chunk_points=chunk_points,
         seconds=seconds,
-        chunk_memory=math.ceil(RESIDENT_FACTOR * peak / sizes[0] * chunk_points),
-        output_bytes=math.ceil(encoded / sizes[0] * sweep.size) if output is not None else 0,
+        chunk_memory=math.ceil(RESIDENT_FACTOR * peak / weighed * chunk_points),
+        output_bytes=math.ceil(encoded / weighed * sweep.size) if output is not None else 0,
         available_memory=available_memory(),
         free_disk=free_disk(output) if output is not None else None,
+        trial_points=trials.points if timed else (),
+        weighed_points=weighed,
     )
 
 
@@ -340,10 +354,10 @@ def estimate_sweep(
 ) -> SweepEstimate:
     """What :func:`~spinimpact.io.sweep.run_sweep` with these arguments will cost (a trial chunk).
 
-    The sweep's first points (up to two trial chunks of at most 16,384 and 262,144
-    points, :func:`estimate`) are computed, and encoded as the output would be, timed
-    (unless ``timed`` is false) and weighed (:mod:`tracemalloc`); the figures are scaled
-    to the sweep. Nothing is written.
+    The sweep's first points (trial chunks of 64 up to 262,144 points, grown while they
+    take at most a tenth of the sweep's time and 2 s: :func:`estimate`) are computed, and
+    encoded as the output would be, timed (unless ``timed`` is false) and weighed
+    (:mod:`tracemalloc`); the figures are scaled to the sweep. Nothing is written.
 
     Returns
     -------

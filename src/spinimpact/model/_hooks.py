@@ -14,10 +14,12 @@ __all__ = ["tangential_law"]
 def tangential_law(law: Any) -> Any:
     """``law`` if it is a tangential compliance law (it can solve an impact), else
     ``TypeError`` naming what was given."""
+    laws = "spinimpact.Walton, spinimpact.Stronge or spinimpact.MindlinDeresiewicz"
+    if isinstance(law, type):  # the class itself, not a law with its parameters
+        raise TypeError(f"tangential must be a law, an instance such as {law.__name__}(...) "
+                        f"with its parameters, got the class {law.__name__}")  # fmt: skip
     if not (callable(getattr(law, "_solve_plane", None)) and callable(
             getattr(law, "_solve_sphere", None))):  # fmt: skip
-        raise TypeError(
-            "tangential must be a tangential compliance law (spinimpact.Walton or "
-            f"spinimpact.Stronge) or None, got {law!r}"
-        )
+        raise TypeError(f"tangential must be a tangential compliance law ({laws}) or None, "
+                        f"got {law!r}")  # fmt: skip
     return law

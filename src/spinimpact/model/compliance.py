@@ -27,7 +27,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from .._validation import scalar, whole
+import numpy as np
+
+from .._validation import check, scalar, whole
 from ..core import compliance as kernels
 from ..core import mdr
 from .compliant import (
@@ -86,6 +88,17 @@ class TangentialLaw:
         """Whether the law applies no friction whatever ``mu``: its impacts are
         ``frictionless``, as those with ``mu = 0``."""
         return False
+
+    def kappa_ok(self, kappa: Any) -> np.ndarray:
+        """Where the law can take the restitution ``kappa`` (already in ``[0, 1]``): all."""
+        return np.ones(np.shape(kappa), dtype=bool)
+
+    def check_kappa(self, kappa: Any) -> None:
+        """Raise ``ValueError`` naming ``kappa`` (and the first index) where the law cannot
+        take it (:meth:`kappa_ok`)."""
+        check("kappa", np.asarray(kappa, dtype=float), self.kappa_ok, self.kappa_rule)
+
+    kappa_rule: ClassVar[str] = "in [0, 1]"
 
     def to_dict(self) -> dict[str, Any]:
         """The law's name and parameters as plain Python values."""
@@ -197,6 +210,10 @@ class Stronge(TangentialLaw):
         return f"Stronge(stiffness_ratio={self.stiffness_ratio!r})"
 
 
+#: Most springs * steps of :class:`MindlinDeresiewicz` (its tables: a few of this many floats).
+MAX_CELLS = 2**24
+
+
 @dataclass(frozen=True)
 class MindlinDeresiewicz(TangentialLaw):
     """Hertz normal contact with Mindlin-Deresiewicz tangential contact: elastic in shear,
@@ -215,7 +232,8 @@ class MindlinDeresiewicz(TangentialLaw):
         :func:`spinimpact.core.tangential.mindlin_stiffness_ratio`).
     springs, steps : int
         Resolution: springs of the reduced contact and time steps of an impact (defaults
-        256 and 2048: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after).
+        256 and 2048: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after
+        on random impacts with ``mu <= 0.8``; within ``5e-5`` in the no-slip limit).
 
     Notes
     -----
@@ -252,6 +270,16 @@ class MindlinDeresiewicz(TangentialLaw):
             if value < low:
                 raise ValueError(f"{key} must be at least {low}, got {value!r}")
             object.__setattr__(self, key, value)
+        if self.springs * self.steps > MAX_CELLS:  # the tables of one kappa: 8 bytes a cell
+            raise ValueError(f"springs * steps must be at most {MAX_CELLS} (memory), got "
+                             f"{self.springs} * {self.steps}")  # fmt: skip
+
+    kappa_rule: ClassVar[str] = ("> 0 under MindlinDeresiewicz (Hunt-Crossley damping "
+                                 "cannot stop the ball: kappa in (0, 1])")  # fmt: skip
+
+    def kappa_ok(self, kappa: Any) -> np.ndarray:
+        """``kappa > 0``: Hunt-Crossley damping cannot make a Hertz impact perfectly plastic."""
+        return np.asarray(kappa) > 0.0
 
     def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
         return mdr.mdr_slip(slip, vy, zeta, mu, kappa, self.stiffness_ratio,

@@ -61,7 +61,8 @@ class CompliantImpact(Result):
     ----------
     body : Body
     law : TangentialLaw
-        The law (:class:`~spinimpact.Walton` or :class:`~spinimpact.Stronge`).
+        The law (:class:`~spinimpact.Walton`, :class:`~spinimpact.Stronge` or
+        :class:`~spinimpact.MindlinDeresiewicz`).
     mu, kappa : float or ndarray
     before, after : State
         Incidence and rebound ``(vx, vy, omega)``.
@@ -133,6 +134,7 @@ def solve_compliant(law: Any, body: Body, vx: Any, vy: Any, omega: Any, *, mu: A
         radius=np.asarray(body.radius), gyration=np.asarray(body.gyration),
         zeta=np.asarray(body.zeta),
     )  # fmt: skip
+    law.check_kappa(kappa_)
     inertia = m * g**2
     slip = core.slip_velocity(vx_, om_, r)
     slip1, stuck = law.rebound_slip(slip, vy_, zeta, mu_, kappa_)
@@ -233,6 +235,7 @@ def solve_sphere_compliant(
     v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c = _incidence(
         body, velocity, spin, mu, kappa, surface
     )
+    law.check_kappa(kappa_)
     cn, speed = c.normal_velocity, c.slip_speed
     speed1, stuck = law.rebound_slip(speed, cn, zeta, mu_, kappa_)  # signed, along c_t^-
     f1 = laws.tangential_impulse_of(m, zeta, speed, speed1)

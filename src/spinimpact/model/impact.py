@@ -274,7 +274,7 @@ def solve(
         Coefficient of normal restitution in ``[0, 1]``, or a restitution model:
         a callable of the impact speed ``|vy|`` returning ``kappa`` (for example
         :class:`~spinimpact.TabulatedRestitution`).
-    tangential : Walton or Stronge, optional
+    tangential : Walton, Stronge or MindlinDeresiewicz, optional
         A tangential compliance law; the result is then a :class:`~spinimpact.CompliantImpact`.
 
     Returns

@@ -149,7 +149,8 @@ class TangentialSimulation(Result):
     vx, vy, omega, tau, compression, energy : ndarray
         Series: s, N, N, m (the tangential spring's displacement), m/s (interface
         slip velocity, 0 while sticking), m/s (``u = vx + R omega``), m/s, m/s,
-        rad/s, N s, m, J (``T + U_n + F^2/(2 k_t)``, which never increases).
+        rad/s, N s, m, J (``T + U_n + F^2/(2 k_t)``, with the traction field's energy in
+        place of ``F^2/(2 k_t)`` for ``spring="history"``; it never increases).
     stuck : ndarray of bool
         Whether the contact sticks at each sample.
     """

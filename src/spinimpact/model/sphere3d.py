@@ -280,7 +280,7 @@ def solve_sphere(
         Coefficient of restitution in ``[0, 1]``, or a model of the normal impact speed.
     surface : Surface, optional
         The plane's normal and velocity; by default ``y = 0`` at rest.
-    tangential : Walton or Stronge, optional
+    tangential : Walton, Stronge or MindlinDeresiewicz, optional
         A tangential compliance law; the result is then a
         :class:`~spinimpact.CompliantSphereImpact` with the law's tangential restitution.
 

@@ -77,7 +77,9 @@ def plot_tangential(sim: TangentialSimulation) -> Figure:
     ax_v.set_ylabel("velocity (m/s)")
     e = np.asarray(sim.energy)
     ax_e.plot(t, (e - e[0]) / e[0], lw=1.6, color="C3")
-    ax_e.set_ylabel(r"$(E - E_0)/E_0$, $E = T + U_n + F^2/(2k_t)$")
+    spring = sim.tangential.spring
+    stored = r"U_t" if spring == "history" else r"F^2/(2k_t)"  # history: the field's energy
+    ax_e.set_ylabel(rf"$(E - E_0)/E_0$, $E = T + U_n + {stored}$")
     spans = _stick_spans(t, np.asarray(sim.stuck))
     for ax in axes.flat:
         ax.axhline(0, color="0.7", lw=0.8, zorder=0)
@@ -87,8 +89,10 @@ def plot_tangential(sim: TangentialSimulation) -> Figure:
         ax.legend(loc="lower left", bbox_to_anchor=(0, 1.01), ncol=3, fontsize="small")
     for ax in axes[1]:
         ax.set_xlabel(r"time ($\mu$s); stick phases shaded")
+    switches = f"{sim.switches} stick/slip switch{'' if sim.switches == 1 else 'es'}"
     fig.suptitle(
-        f"Hertz-Mindlin contact: $k_t/k_n$ = {sim.stiffness_ratio:.3f}, "
-        f"{sim.switches} stick/slip switches, $\\beta$ = {float(sim.tangential_restitution):.3f}"
+        f"{type(sim.contact).__name__}, Mindlin spring ({spring}): "
+        f"$k_t/k_n$ = {sim.stiffness_ratio:.3f}, {switches}, "
+        f"$\\beta$ = {float(sim.tangential_restitution):.3f}"
     )
     return fig
