@@ -8,8 +8,9 @@ pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``
 :class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones. With
 ``--sphere``, one sphere in 3D (:mod:`~spinimpact.cli._sphere_sweep`).
 
-Before computing, a trial chunk estimates the time, the memory of a chunk and the size
-of the output (:func:`~spinimpact.io.sweep.estimate_sweep`); a sweep whose chunk does
+Before computing, trial chunks (the sweep's first points, grown while they take at most
+a tenth of its time and 2 s) estimate the time, the memory of a chunk and the size of
+the output (:func:`~spinimpact.io.sweep.estimate_sweep`); a sweep whose chunk does
 not fit in memory, whose output does not fit on its disk, or that would take more than
 an hour is refused in one line unless ``--force`` is given; ``--dry-run`` prints the
 estimate and stops.
@@ -136,8 +137,8 @@ def _refuse_what_cannot_fit(cost: Any, dask: bool) -> None:
     problems = cost.problems(max_seconds=None if dask else MAX_SECONDS)
     if problems:
         raise click.ClickException(
-            f"this sweep cannot run as asked: {'; '.join(problems)} (estimated from a trial "
-            "chunk; --force runs it anyway)"
+            f"this sweep cannot run as asked: {'; '.join(problems)} (estimated from its first "
+            f"{cost.measured_points:,} points; --force runs it anyway)"
         )
 
 
@@ -283,7 +284,8 @@ def _dask_client(address: str | None) -> Any:
 @click.option(
     "--dry-run",
     is_flag=True,
-    help="Print the estimate (points, time, memory a chunk, output size) and stop.",
+    help="Print the estimate (points, time, memory a chunk, output size; the points it was "
+    "measured on: the sweep's first, as many as are cheap) and stop.",
 )
 @click.option(
     "--force",
