@@ -71,37 +71,20 @@ def kharaz_figure(models, path: Path) -> None:
 
 def microslip_figure(path: Path, angles=(2.0, 4.0, 10.0, 20.0)) -> None:
     """One Kharaz impact in time at each of ``angles`` under micro-slip
-    (:func:`spinimpact.core.mdr.mdr_trace`): the friction force over Coulomb's bound and
-    the radius of the stuck core over the contact radius."""
+    (:func:`spinimpact.viz.micro_slip.plot_micro_slip`): the friction force over Coulomb's
+    bound, the stuck core's radius over the contact radius, the contact point's slip."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from spinimpact.core.mdr import mdr_trace
-    from spinimpact.core.tangential import mindlin_stiffness_ratio
+    from spinimpact.model.compliance import MindlinDeresiewicz
+    from spinimpact.viz.micro_slip import plot_micro_slip
 
-    r = float(mindlin_stiffness_ratio(kharaz.OXIDE.poisson_ratio))
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.6), constrained_layout=True)
-    for angle in angles:
-        vx, vy = kharaz.incidence(angle)
-        tr = mdr_trace(vx, vy, 3.5, kharaz.MU, kharaz.KAPPA, r)
-        t = tr.t / tr.t[-1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = np.where(tr.normal_force > 0, -tr.tangential_force
-                             / (kharaz.MU * tr.normal_force), np.nan)  # fmt: skip
-        axes[0].plot(t, ratio, lw=1.6, label=f"{angle:g} deg")
-        axes[1].plot(t, tr.stick_radius, lw=1.6, label=f"{angle:g} deg")
-    axes[0].axhline(1.0, color="0.5", lw=0.8)
-    axes[0].axhline(-1.0, color="0.5", lw=0.8)
-    axes[0].set_ylabel(r"friction force over Coulomb's bound, $F/(\mu N)$")
-    axes[1].set_ylabel("radius of the stuck core over the contact radius, c/a")
-    for ax in axes:
-        ax.set_xlabel("time over the contact time")
-        ax.grid(alpha=0.3)
-        ax.legend(title="incidence", fontsize="small")
-    fig.suptitle("Kharaz et al.'s sphere under micro-slip (MindlinDeresiewicz, nu = 0.23, "
-                 "mu = 0.092, kappa = 0.98)", fontsize="medium")  # fmt: skip
+    vx, vy = kharaz.incidence(np.array(angles))
+    law = MindlinDeresiewicz(poisson_ratio=kharaz.OXIDE.poisson_ratio)
+    fig = plot_micro_slip(law, kharaz.OXIDE.body, vx, vy, 0.0, mu=kharaz.MU,
+                          kappa=kharaz.KAPPA, labels=[f"{a:g} deg" for a in angles])  # fmt: skip
     fig.savefig(path, dpi=80)
     plt.close(fig)
 
