@@ -364,6 +364,7 @@ def mdr_trace(slip, vy, zeta, mu, kappa, stiffness_ratio, springs=256, steps=204
     tangential kinetic energy ``u^2/(2 zeta)`` never increases)."""
     sp = _setup(float(kappa), int(steps), int(springs), float(stiffness_ratio))
     hist, x, limits, stiffness, share = sp.hist, sp.x, sp.limits, sp.stiffness, sp.share
+    _check_resolution(hist, steps, stiffness_ratio, float(zeta))
     dt = float(hist.t[1] - hist.t[0])
     n = limits.shape[0]
     s = np.zeros(springs)

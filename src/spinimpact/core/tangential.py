@@ -349,6 +349,6 @@ def integrate_tangential(
         else:  # slip has stopped: the spring holds the cap force
             y[7] = sigma * mu * big_n
         stick = not stick
-    kept = (memory[0], t0) if history else None  # spring="history": the history and t0
+    kept = memory[0] if history else None  # spring="history": its loading history
     return sampled(segments, t, y, t0, tau0, work0, switches, samples, mass, radius, inertia,
                    mu, vy, normal, kt, k, n, rates, kept)  # fmt: skip

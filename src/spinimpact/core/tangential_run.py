@@ -69,8 +69,8 @@ def sampled(segments, t_end, y_end, t0, tau0, work0, switches, samples, mass, ra
     stiff = np.array([kt(d) for d in delta])
     with np.errstate(divide="ignore", invalid="ignore"):
         spring_energy = np.where(stiff > 0, force**2 / (2.0 * stiff), 0.0)
-    if history is not None:  # spring="history": (its loading history, t0)
-        spring_energy = history_energy(history[0], history[1], times, delta, force, stiff)
+    if history is not None:  # spring="history": its loading history
+        spring_energy = history_energy(history, t0, times, delta, force, stiff)
     energy = (0.5 * mass * (vxs**2 + vys**2) + 0.5 * inertia * oms**2
               + k * np.maximum(delta, 0.0) ** (n + 1.0) / (n + 1.0) + spring_energy)  # fmt: skip
     tau1 = float(y_end[4])
