@@ -7,17 +7,24 @@ import numpy as np
 REGIME_NAMES = ("frictionless", "no-slip", "stick-compression", "stick-restitution", "slip")
 
 
-def random_cases(n: int, seed: int = 0) -> dict[str, np.ndarray]:
+#: The zetas of :func:`random_cases`: the four presets, spools (``rho > R``) and a compact body.
+ZETAS = (3.0, 2.0, 3.5, 2.5, 1.2, 1.05, 5.0)
+#: Those a sphere may have (``rho <= sqrt(2/3) R``, ``zeta >= 5/2``), for the 3D solvers.
+SPHERE_ZETAS = (3.5, 2.5, 5.0)
+
+
+def random_cases(n: int, seed: int = 0, zetas: tuple[float, ...] = ZETAS) -> dict[str, np.ndarray]:
     """``n`` impacts, a fifth of them aimed at each regime (by the paper's inequalities).
 
-    Bodies range over the four presets and spools (``rho > R``); masses over three
-    decades, radii over two; ``mu`` in (0, 1.5]; ``kappa`` in [0, 1] with its ends.
+    Bodies range over ``zetas`` (by default the four presets and spools, ``rho > R``;
+    :data:`SPHERE_ZETAS` for spheres); masses over three decades, radii over two; ``mu`` in
+    (0, 1.5]; ``kappa`` in [0, 1] with its ends.
     """
     rng = np.random.default_rng(seed)
     target = np.arange(n) % 5
     mass = 10 ** rng.uniform(-2, 1, n)
     radius = 10 ** rng.uniform(-2, 0, n)
-    zeta = rng.choice([3.0, 2.0, 3.5, 2.5, 1.2, 1.05, 5.0], n)
+    zeta = rng.choice(zetas, n)
     gyration = radius / np.sqrt(zeta - 1.0)
     mu = rng.uniform(0.01, 1.5, n)
     mu[target == 0] = 0.0

@@ -345,10 +345,11 @@ def _aim(rng, target, zeta, mu, kappa, cn):
 
 
 def _gyration(rng, radius):
-    """Solid spheres, thin shells, thick shells, and bodies outside the sphere family
-    (a heavy core, ``zeta = 6``; mass far out, ``rho > R``)."""
+    """Solid spheres, thin shells, thick shells, and heavy cores (``zeta = 6`` and ``12``).
+    No sphere has its mass further out than a thin shell's (``rho > sqrt(2/3) R``, ``zeta <
+    5/2``): the solvers refuse it (tests/model/test_sphere_inputs.py)."""
     n = radius.size
-    zeta = rng.choice([3.5, 2.5, 6.0, 1.5], n)
+    zeta = rng.choice([3.5, 2.5, 6.0, 12.0], n)
     thick = rng.random(n) < 0.3
     zeta[thick] = rng.uniform(2.5, 3.5, n)[thick]
     return radius / np.sqrt(zeta - 1.0), zeta

@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 __all__ = [
+    "approach",
     "as_real_array",
     "scalar",
     "whole",
@@ -178,6 +179,18 @@ RULES: dict[str, list[tuple[Callable[[np.ndarray], np.ndarray], str]]] = {
         (lambda a: a >= SMALLEST / math.sqrt(MAX_ZETA), f">= {SMALLEST / math.sqrt(MAX_ZETA):g}"),
     ],
 }
+
+
+def approach(name: str, velocity: np.ndarray, who: str) -> None:
+    """Refuse a normal approach velocity as ``RULES["vy"]`` refuses ``vy``.
+
+    ``velocity`` must be ``< 0`` (``who`` completes "(... must approach ...)", e.g. "the
+    sphere must approach the surface") and ``<= -SMALLEST``: a slower approach grazes the
+    surface, and the impulses, which divide by it, would be infinite or NaN.
+    """
+    (approaches, _), (fast_enough, rule) = RULES["vy"]
+    check(name, velocity, approaches, f"< 0 ({who})")
+    check(name, velocity, fast_enough, f"{rule} (a slower approach only grazes the surface)")
 
 
 def validated(name: str, value: object, rules_for: str | None = None) -> np.ndarray:

@@ -45,7 +45,7 @@ def sphere_rows(n=40, seed=1):
     w = rng.normal(size=(n, 3)) * 100
     mu, kappa = rng.uniform(0, 0.8, n), rng.uniform(0, 1, n)
     mass, radius = rng.uniform(0.05, 2, n), rng.uniform(0.01, 0.2, n)
-    gyration = np.where(np.arange(n) % 3 == 0, radius * rng.uniform(0.5, 0.9, n), np.nan)
+    gyration = np.where(np.arange(n) % 3 == 0, radius * rng.uniform(0.5, 0.8, n), np.nan)
     body = np.where(np.arange(n) % 3 == 1, "spherical-shell", "")
     return v, w, mu, kappa, mass, radius, gyration, body, normal, surface
 

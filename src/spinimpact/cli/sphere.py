@@ -20,7 +20,7 @@ from typing import Any
 import click
 import numpy as np
 
-from ..model.body import Body
+from ..model.body import Body, check_sphere
 from ..model.pair import solve_pair
 from ..model.sphere3d import Surface, solve_sphere
 from ._common import DEFAULTS, _options, float_option, image_format, progress
@@ -162,7 +162,9 @@ def _body(o: dict, k: str = "") -> Body:
     if gyration is not None:
         if name is not None:
             raise click.UsageError(f"give either --body{k} or --gyration{k}, not both")
-        return Body(mass=o[f"mass{k}"], radius=o[f"radius{k}"], gyration=gyration)
+        body = Body(mass=o[f"mass{k}"], radius=o[f"radius{k}"], gyration=gyration)
+        check_sphere(body, f"--gyration{k}")  # named as typed
+        return body
     return Body.preset(name or SPHERES[0], mass=o[f"mass{k}"], radius=o[f"radius{k}"])
 
 

@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .._validation import SMALLEST
 from ..core import scalar as law
 from ..core import scalar3d as law3
 from ._fast import REGIMES, build, number
@@ -98,8 +99,8 @@ def sphere_impact(body: Any, velocity: Any, spin: Any, mu: Any, kappa: Any, surf
         return None
     inertia = body.inertia
     cn, ct, speed, e = law3.sphere_contact(v, w, n, radius, vs)
-    if not cn < 0.0:
-        return None  # the array path says why
+    if not cn <= -SMALLEST:
+        return None  # the array path says why (as solve refuses |vy| < SMALLEST)
     (tau0, tau_star, tau1, f1, _, _, code, wcn, wct, wrn, wrt, loss, _, _) = law.contact_impact(
         speed, cn, m, zeta, mu_, k
     )
@@ -203,8 +204,8 @@ def pair_impact(ball1: Any, ball2: Any, velocity1: Any, spin1: Any, velocity2: A
         return (v[0] + a[0], v[1] + a[1], v[2] + a[2])
 
     cn, ct, speed, e = law3.sphere_contact(v1, w1, n, r1, material(v2, w2))
-    if not cn < 0.0:
-        return None  # the array path says why
+    if not cn <= -SMALLEST:
+        return None  # the array path says why (as solve refuses |vy| < SMALLEST)
     kind, state, vector = kinds
     m, zeta = law3.pair_parameters(m1, j1, r1, m2, j2, r2)
     (tau0, tau_star, tau1, f1, _, _, code, wcn, wct, wrn, wrt, loss, _, _) = law.contact_impact(

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -10,7 +11,7 @@ import numpy as np
 from .._validation import MAX_ZETA, as_real_array, check, validated
 from .result import BodyColumns
 
-__all__ = ["Body", "PRESETS"]
+__all__ = ["Body", "PRESETS", "SHELL_GYRATION", "check_sphere"]
 
 #: Squared radius of gyration over squared radius, ``rho^2/R^2``, of the presets.
 PRESETS: dict[str, float] = {
@@ -19,6 +20,12 @@ PRESETS: dict[str, float] = {
     "solid-sphere": 2.0 / 5.0,  # zeta = 7/2 (plane motion)
     "spherical-shell": 2.0 / 3.0,  # zeta = 5/2
 }
+
+#: A thin spherical shell's radius of gyration over its radius, ``sqrt(2/3)``: the largest
+#: of any sphere (its mass is all at the radius), so ``zeta >= 5/2`` for every sphere.
+SHELL_GYRATION = math.sqrt(2.0 / 3.0)
+#: ``Body(gyration=R * sqrt(2/3))`` is a thin shell whichever way the product rounds.
+_SHELL_BOUND = SHELL_GYRATION * (1.0 + 1e-12)
 
 
 @dataclass(frozen=True, eq=False)
@@ -198,3 +205,40 @@ class Body(BodyColumns):
             f"Body(name={self.name!r}, mass={fmt(self.mass)}, radius={fmt(self.radius)}, "
             f"gyration={fmt(self.gyration)}, zeta={fmt(self.zeta)})"
         )
+
+
+def check_sphere(body: Body, name: str = "gyration") -> None:
+    """Refuse a body that cannot be a sphere: a radius of gyration above a thin shell's.
+
+    A sphere's mass lies within its radius ``R``, so its radius of gyration is at most a
+    thin spherical shell's, ``sqrt(2/3) R``. A disk, ring or spool in plane motion may
+    exceed it (:func:`~spinimpact.solve` accepts them); the 3D solvers may not.
+
+    Parameters
+    ----------
+    body : Body
+        The sphere (``mass``, ``radius``, ``gyration``: numbers or arrays).
+    name : str
+        The parameter named in the error, e.g. ``"ball2's gyration"``.
+
+    Raises
+    ------
+    ValueError
+        Where ``gyration > sqrt(2/3) * radius`` (to ``1e-12`` relative), naming the
+        gyration, the radius, the bound and, for arrays, the first offending index.
+    """
+    g, r = body.gyration, body.radius
+    if type(g) is float and type(r) is float and g <= r * _SHELL_BOUND:
+        return  # one plain sphere: no arrays
+    g, r = np.broadcast_arrays(np.asarray(g, dtype=float), np.asarray(r, dtype=float))
+    bad = ~(g <= r * _SHELL_BOUND)
+    if not bad.any():
+        return
+    i = tuple(int(k) for k in np.argwhere(bad)[0]) if bad.ndim else ()
+    where = f" (first offending index {i[0] if len(i) == 1 else i})" if i else ""
+    what = f": the {body.name!r} preset is not a sphere" if body.name in PRESETS else ""
+    raise ValueError(
+        f"{name} must be <= sqrt(2/3) * radius = {float(r[i] * SHELL_GYRATION):g} m (a thin "
+        f"spherical shell's, the largest of any sphere), got {float(g[i])!r} m with radius "
+        f"{float(r[i])!r} m{where}{what}"
+    )

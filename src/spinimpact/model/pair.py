@@ -15,10 +15,10 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import check, validated, vector3
+from .._validation import approach, check, validated, vector3
 from ..core import sphere3d as kernels
 from . import _fast_sphere
-from .body import Body
+from .body import Body, check_sphere
 from .impact import _restitution
 from .result import Array, Result, freeze
 from .sphere3d import State3, Vector, _state, _summary, _vector, _xyz
@@ -160,7 +160,9 @@ def solve_pair(
         Balls that are not :class:`~spinimpact.Body`, inputs that are not numbers.
     ValueError
         Vectors without 3 components, a zero-length normal, overlapping or separate
-        balls, non-finite values, or balls that do not approach each other.
+        balls, non-finite values, a ball that cannot be a sphere (a radius of gyration
+        above a thin shell's ``sqrt(2/3) R``), or balls that do not approach each other
+        along the normal at ``1e-50`` m/s or faster.
 
     Examples
     --------
@@ -177,6 +179,8 @@ def solve_pair(
     for name, ball in (("ball1", ball1), ("ball2", ball2)):
         if not isinstance(ball, Body):
             raise TypeError(f"{name} must be a spinimpact.Body, got {type(ball).__name__}")
+    for name, ball in (("ball1", ball1), ("ball2", ball2)):
+        check_sphere(ball, f"{name}'s gyration")
     one = _fast_sphere.pair_impact(ball1, ball2, velocity1, spin1, velocity2, spin2, mu, kappa,
                                    normal, centres, (PairImpact, State3, Vector))  # fmt: skip
     if one is not None:  # one impact of plain numbers: the same PairImpact, in microseconds
@@ -195,8 +199,8 @@ def solve_pair(
     other = v2 + kernels.cross(w2, r2[..., None] * n)  # ball 2's material at the contact
     c = kernels.sphere_contact(v1, w1, n, r1, other)
     cn, speed = c.normal_velocity, c.slip_speed
-    check("the contact point's normal velocity", cn, lambda x: x < 0,
-          "< 0 (the balls must approach each other along the normal)")  # fmt: skip
+    approach("the contact point's normal velocity", cn,
+             "the balls must approach each other along the normal")  # fmt: skip
     kappa_ = np.broadcast_to(_restitution(kappa, cn), shape)
     m, zeta = kernels.pair_parameters(m1, j1, r1, m2, j2, r2)
     r = kernels.sphere_rebound(c, n, m, zeta, mu_, kappa_)

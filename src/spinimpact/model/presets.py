@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .._validation import check, scalar
-from .body import Body
+from .body import Body, check_sphere
 
 __all__ = ["Ball", "Ground", "Wall", "BALLS", "GROUNDS", "thick_shell_gyration", "ball",
            "ground"]  # fmt: skip
@@ -53,7 +53,8 @@ class Ball:
     ----------
     name : str
     mass, radius, gyration : float
-        kg, m, m (``J = m rho^2``).
+        kg, m, m (``J = m rho^2``); ``gyration`` at most a thin shell's ``sqrt(2/3)
+        radius``, the largest any sphere has.
     drag_coefficient : float
         ``C_D >= 0`` (constant).
     lift_slope, lift_max : float
@@ -76,6 +77,7 @@ class Ball:
         if not isinstance(self.name, str):
             raise TypeError(f"name must be a str, got {self.name!r}")
         body = Body(mass=self.mass, radius=self.radius, gyration=self.gyration, name=self.name)
+        check_sphere(body)
         for k in ("mass", "radius", "gyration"):
             object.__setattr__(self, k, scalar(k, getattr(body, k)))
         for k in ("drag_coefficient", "lift_slope", "spin_decay"):

@@ -16,11 +16,11 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import check, validated, vector3, whole
+from .._validation import approach, check, validated, vector3, whole
 from ..core import sphere3d as kernels
 from . import _fast_sphere
 from ._hooks import tangential_law
-from .body import Body
+from .body import Body, check_sphere
 from .impact import _restitution
 from .result import Array, Result, freeze, regime_counts
 
@@ -241,6 +241,7 @@ def _incidence(body, velocity, spin, mu, kappa, surface):
     """Validated, broadcast inputs of one or many sphere impacts and their contact
     (``kernels.sphere_contact``), refusing a contact point that does not approach:
     ``(v, w, normal, surface_velocity, m, radius, inertia, zeta, mu, kappa, contact)``."""
+    check_sphere(body)
     surface = Surface() if surface is None else surface
     if not isinstance(surface, Surface):
         raise TypeError(f"surface must be a spinimpact.Surface, got {type(surface).__name__}")
@@ -253,8 +254,8 @@ def _incidence(body, velocity, spin, mu, kappa, surface):
     v, w, nrm, vs = (np.broadcast_to(x, (*shape, 3)) for x in (v, w, nrm, vs))
     m, radius, inertia, zeta, mu_ = (np.broadcast_to(x, shape) for x in (*parts, mu_))
     c = kernels.sphere_contact(v, w, nrm, radius, vs)
-    check("the contact point's normal velocity", c.normal_velocity, lambda x: x < 0,
-          "< 0 (the sphere must approach the surface)")  # fmt: skip
+    approach("the contact point's normal velocity", c.normal_velocity,
+             "the sphere must approach the surface")  # fmt: skip
     kappa_ = np.broadcast_to(_restitution(kappa, c.normal_velocity), shape)
     return v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c
 
@@ -294,8 +295,11 @@ def solve_sphere(
         A ``body`` that is not a :class:`~spinimpact.Body`, a ``surface`` that is not a
         :class:`Surface`, or inputs that are not numbers.
     ValueError
-        Vectors without 3 components, a zero-length normal, non-finite values, or a
-        contact point that does not approach the surface.
+        Vectors without 3 components, a zero-length normal, non-finite values, a body that
+        cannot be a sphere (a radius of gyration above a thin shell's ``sqrt(2/3) R``:
+        :func:`~spinimpact.model.body.check_sphere`), or a contact point that does not
+        approach the surface at ``1e-50`` m/s or faster (as :func:`~spinimpact.solve`
+        refuses ``|vy| < 1e-50``).
 
     Examples
     --------
@@ -313,6 +317,7 @@ def solve_sphere(
                                                         kappa=kappa, surface=surface)  # fmt: skip
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    check_sphere(body)  # before the fast path, which skips _incidence (it checks too)
     kinds = (SphereImpact, State3, Vector, Surface)
     one = _fast_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
     if one is not None:  # one impact of plain numbers: the same SphereImpact, in microseconds
