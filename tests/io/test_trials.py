@@ -9,7 +9,7 @@ import math
 
 import pytest
 
-from spinimpact.io import _trials
+from spinimpact import _long as _trials
 from spinimpact.io._runner import TRIAL_POINTS, estimate
 from spinimpact.io.sweep import Sweep, parse_axis
 

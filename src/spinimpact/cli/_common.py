@@ -33,6 +33,8 @@ __all__ = [
     "image_format",
     "jsonable",
     "errors_to_exit_2",
+    "announce",
+    "long_run",
 ]
 
 #: The documented default case (``spinimpact solve`` with no options): a 1 kg
@@ -200,6 +202,25 @@ def progress() -> Any:
         disable=not console.is_terminal,
         transient=True,
     )
+
+
+def announce(estimate: Any) -> None:
+    """Say a long run's estimate on stderr before it starts (over a minute:
+    :data:`spinimpact._long.ANNOUNCE_SECONDS`)."""
+    if estimate.announced:
+        click.echo(f"spinimpact: {estimate}", err=True)
+
+
+@contextmanager
+def long_run() -> Iterator[None]:
+    """Refuse a run estimated over an hour (:class:`spinimpact._long.TooLong`) in one line
+    naming ``--force``, the command line's way to force it."""
+    from .._long import TooLong
+
+    try:
+        yield
+    except TooLong as exc:
+        raise click.ClickException(exc.estimate.refusal("--force")) from None
 
 
 def image_format(path: str, option: str = "--output") -> str:

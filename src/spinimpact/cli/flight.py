@@ -19,7 +19,7 @@ import numpy as np
 
 from ..model.flight import AIR_DENSITY, flight
 from ..model.presets import BALLS, GROUNDS
-from ._common import image_format, jsonable, progress
+from ._common import announce, image_format, jsonable, long_run, progress
 from ._compliance import tangential_law, tangential_options
 
 __all__ = ["flight_command"]
@@ -242,6 +242,11 @@ def _print_many(f: Any) -> None:
 @click.option("--animate", default=None, help="Write an animation (.gif; .mp4 with ffmpeg).")
 @click.option("--fps", type=click.IntRange(1, 60), default=20, show_default=True)
 @click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True)
+@click.option(
+    "--force",
+    is_flag=True,
+    help="Fly even a flight estimated to take over an hour (a very fine --dt).",
+)
 @tangential_options
 def flight_command(**o: Any) -> None:
     """A spinning ball through the air (drag, Magnus lift, spin decay), bouncing exactly on
@@ -265,21 +270,13 @@ def flight_command(**o: Any) -> None:
         max_bounces=o["max_bounces"], t_stop=o["t_stop"], dt=o["dt"], tangential=law,
         wall=_wall(o),
     )  # fmt: skip
-    if o["samples"] is None:
-        f = flight(o["ball"], ground, **inputs, **kw)
-    else:
-        with progress() as bar:
-            task = bar.add_task(f"flying {o['samples']} balls", total=o["samples"])
-            done = lambda n, _: bar.update(task, completed=n)  # noqa: E731
-            f = flight(
-                o["ball"],
-                ground,
-                **inputs,
-                **kw,
-                path=o["plot"] is not None,
-                chunk=1024,
-                progress=done,
-            )
+    n = 1 if o["samples"] is None else o["samples"]
+    many = {} if o["samples"] is None else {"path": o["plot"] is not None, "chunk": 1024}
+    with long_run(), progress() as bar:
+        task = bar.add_task(f"flying {n} ball{'s' * (n != 1)}", total=n)
+        done = lambda d, _: bar.update(task, completed=d)  # noqa: E731
+        f = flight(o["ball"], ground, **inputs, **kw, **many, force=o["force"],
+                   announce=announce, progress=done)  # fmt: skip
     if o["as_json"]:
         d = f.to_dict()
         for name in ("path_time", "path_position"):

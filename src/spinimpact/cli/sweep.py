@@ -23,6 +23,7 @@ from typing import Any
 
 import click
 
+from .._long import ANNOUNCE_SECONDS, REFUSE_SECONDS
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
 from ._compliance import sweep_class, tangential_options
@@ -38,8 +39,9 @@ _PLANAR_ONLY = ("law", *_CUSTOM, "length", "width", "height", "offset", "angle",
 #: The axes of --vx and --omega when not typed: a grid, or ranges to draw random points from.
 _GRID = {"vx": "-5:5:201", "omega": "-50:50:201"}
 _RANDOM = {"vx": "uniform:-5:5", "omega": "uniform:-50:50"}
-#: A sweep estimated to take longer than this is refused unless --force is given.
-MAX_SECONDS = 3600.0
+#: A sweep estimated to take longer than this is refused unless --force is given (the rule
+#: of every long run: :mod:`spinimpact._long`).
+MAX_SECONDS = REFUSE_SECONDS
 
 
 def _given(ctx: click.Context, name: str) -> bool:
@@ -357,7 +359,7 @@ def sweep_command(
         _refuse_what_cannot_fit(cost, dask=bool(dask_address))
         if dry_run:
             return
-        if cost.seconds >= 10:
+        if cost.seconds > ANNOUNCE_SECONDS:  # False for NaN
             click.echo(f"spinimpact: {cost}", err=True)
     client = _dask_client(dask_address)
     try:

@@ -2,7 +2,7 @@
 what a sweep will cost before it starts (:func:`estimate`); the reductions it folds.
 
 :func:`estimate` runs trial chunks of the sweep itself (its first points, grown only
-while they are cheap: :mod:`spinimpact.io._trials`), timed, and weighs one of at most
+while they are cheap: :mod:`spinimpact._long`), timed, and weighs one of at most
 :data:`TRIAL_POINTS` with :mod:`tracemalloc`; it scales them to the whole sweep: the
 points, the time on this machine, the memory a chunk holds at its peak and the bytes of
 the output, beside the memory available and the space free on the output's disk.
@@ -23,9 +23,10 @@ from typing import Any
 
 import numpy as np
 
+from .. import _long as _trials
 from .. import core
+from .._long import duration_text
 from .._validation import require
-from . import _trials
 from ._fields import DEFAULT_FIELDS, TableColumns, npy_encoded_size, plan
 
 __all__ = [
@@ -153,14 +154,6 @@ def size_text(n: float) -> str:
     raise AssertionError  # pragma: no cover
 
 
-def duration_text(seconds: float) -> str:
-    """Seconds in words: ``"1.4 h"``, ``"3.2 days"``."""
-    for unit, length in (("days", 86400), ("h", 3600), ("min", 60)):
-        if seconds >= length:
-            return f"{seconds / length:.2g} {unit}"
-    return f"{seconds:.2g} s"
-
-
 def available_memory() -> int | None:
     """Bytes this process may still allocate, or ``None`` where it cannot be told.
 
@@ -277,7 +270,7 @@ def estimate(
 
     The trials are the sweep's first points, from 64 up to 16 times :data:`TRIAL_POINTS`
     (no more than a chunk), growing while they are cheap: the trials take a tenth of
-    the sweep's own time, between 0.05 and 2 s (:mod:`spinimpact.io._trials`), so a
+    the sweep's own time, between 0.05 and 2 s (:mod:`spinimpact._long`), so a
     sweep of slow points is measured on fewer. A chunk's time is taken as ``a + b *
     points`` (a cost per chunk, such as starting threads, and a cost per point that
     grows once the arrays leave the caches), fitted to the two largest trials (or
@@ -324,11 +317,7 @@ def estimate(
         tracemalloc.stop()
     seconds = math.nan
     if timed:
-        points, times = trials.points[-2:], trials.seconds[-2:]
-        per_point = times[-1] / points[-1]
-        if len(points) == 2 and times[1] > times[0]:
-            per_point = (times[1] - times[0]) / (points[1] - points[0])
-        per_chunk = max(times[-1] - per_point * points[-1], 0.0)
+        per_chunk, per_point = _trials.fit_line(trials.points, trials.seconds)
         seconds = sweep.chunks * per_chunk + sweep.size * per_point
     return SweepEstimate(
         points=sweep.size,

@@ -23,13 +23,15 @@ from typing import Any
 
 import numpy as np
 
+from .._long import Estimate
 from .._validation import as_real_array, broadcast, check, setting, vector3, whole
 from ..core import impulse
 from ..core.aero import aero_constants
 from ..core.bounces import STOPS, assemble_path, fly
 from ..core.compliance import COMPLIANT_REGIMES
-from ..core.flight import STEP_FRACTION, air_time_scales
+from ..core.flight import STEP_FRACTION, air_time_scales, integrate_to_ground
 from ._hooks import tangential_law
+from .flight_cost import fly_chunks
 from .flight_result import Bounces, Flight
 from .presets import Ball, Ground, Wall
 from .presets import ball as as_ball
@@ -119,7 +121,8 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
            max_bounces: int = 30, t_stop: float = 60.0, settle_speed: float = 0.05,
            dt: float = 5e-3, chunk: int = 4096, path: bool | None = None,
            progress: Callable[[int, int], None] | None = None,
-           tangential: Any = None, wall: Wall | None = None) -> Flight:  # fmt: skip
+           tangential: Any = None, wall: Wall | None = None, force: bool = False,
+           announce: Callable[[Estimate], None] | None = None) -> Flight:  # fmt: skip
     """Fly a spinning ball, bounce it exactly on the ground, and roll it to rest.
 
     Parameters
@@ -166,6 +169,13 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         A vertical wall across the ball's way (:class:`~spinimpact.model.presets.Wall`), with
         its own ``mu`` and ``kappa``: the ball bounces off it in flight (``bounces.surface``
         is ``"wall"``); a rolling ball does not meet it.
+    force : bool
+        Fly even a flight estimated to take more than an hour (a step much finer than
+        needed); otherwise it is refused before it runs.
+    announce : callable, optional
+        ``announce(estimate)``, an :class:`~spinimpact._long.Estimate`: called before the
+        run when it may take more than a minute (its first steps bound it), with the time
+        measured on trials of its first chunk (:mod:`spinimpact.model.flight_cost`).
 
     Returns
     -------
@@ -177,7 +187,9 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         Bad input, named: a negative speed, a spin axis of length zero, a ball that starts
         below the ground, a step or stopping time that is not positive, a step too large
         for the flight (the message names the limit), inputs whose shapes do not broadcast
-        (the message names them and their shapes), ...
+        (the message names them and their shapes), ...; a flight estimated to take more
+        than an hour, unless ``force`` (:class:`~spinimpact._long.TooLong`, naming the
+        estimate).
 
     Examples
     --------
@@ -239,21 +251,28 @@ def flight(ball: Ball | str, ground: Ground | str, *, speed: Any = None, angle: 
         drag_coefficient=ball_.drag_coefficient, lift_slope=ball_.lift_slope,
         lift_max=ball_.lift_max, spin_decay=ball_.spin_decay, gravity=g,
     )  # fmt: skip
-    _check_step(dt, aero, p, v, w0, ball_)
+    limit = _check_step(dt, aero, p, v, w0, ball_)
     slip_law = None if law is None else law.rebound_slip
-    parts = []
-    for start in range(0, n, chunk):
-        sl = slice(start, min(n, start + chunk))
+
+    def fly_chunk(sl: slice, step: float) -> tuple:
         run = fly(p[sl], v[sl], w0[sl], mass=ball_.mass, radius=radius, inertia=body.inertia,
                   zeta=body.zeta, mu=ground_.mu, kappa=ground_.kappa, rolling=ground_.rolling,
-                  aero=aero, max_bounces=nb, t_stop=t_stop, settle_speed=settle, dt=dt,
+                  aero=aero, max_bounces=nb, t_stop=t_stop, settle_speed=settle, dt=step,
                   record=record, rebound_slip=slip_law, wall=plane,
                   frictionless=law is not None and law.frictionless)  # fmt: skip
         used = max(1, int(run.bounces.max(initial=0)))
         trimmed = run._replace(**{k: getattr(run, k)[:, :used] for k in _PER_BOUNCE})
-        parts.append((trimmed, assemble_path(run.path, sl.stop - sl.start) if record else None))
-        if progress is not None:
-            progress(sl.stop, n)
+        return trimmed, assemble_path(run.path, sl.stop - sl.start) if record else None
+
+    def probe(sl: slice, step: float, k: int) -> None:
+        integrate_to_ground(np.zeros(sl.stop - sl.start), p[sl], v[sl], w0[sl], aero,
+                            radius=radius, t_stop=k * step, dt=step, wall=plane)  # fmt: skip
+
+    exact = aero.drag == 0 and aero.lift == 0 and aero.spin_decay == 0
+    what = f"this flight ({n:,} ball{'s' * (n != 1)}, dt = {dt:g} s)"
+    parts = fly_chunks(fly_chunk, probe, n, chunk, dt, np.inf if exact else limit,
+                       t_stop / dt + nb, what=what, force=force, announce=announce,
+                       progress=progress)  # fmt: skip
     return _package(ball_, ground_, law, wall, p, v, w0, parts, shape, record)
 
 
@@ -265,9 +284,10 @@ def _number(name: str, value: Any, unit: str, closed: bool = False) -> float:
 
 
 def _check_step(dt: float, aero: Any, p: np.ndarray, v: np.ndarray, w: np.ndarray,
-                ball_: Ball) -> None:  # fmt: skip
+                ball_: Ball) -> float:  # fmt: skip
     """Refuse a step larger than :data:`~spinimpact.core.flight.STEP_FRACTION` of the
-    shortest time scale of the air (:func:`~spinimpact.core.flight.air_time_scales`)."""
+    shortest time scale of the air (:func:`~spinimpact.core.flight.air_time_scales`);
+    return that largest step, s."""
     rotation = ball_.body.inertia / ball_.mass
     height = np.maximum(p[:, 1] - ball_.radius, 0.0)
     energy = np.sum(v * v, -1) + rotation * np.sum(w * w, -1) + 2.0 * aero.gravity * height
@@ -280,6 +300,7 @@ def _check_step(dt: float, aero: Any, p: np.ndarray, v: np.ndarray, w: np.ndarra
             f"{STEP_FRACTION:g} of the shortest time scale of the air, here that of "
             f"{which}, {scales[which]:.3g} s at the largest speed and spin the ball can reach"
         )
+    return limit
 
 
 _PER_BOUNCE = ("bounce_time", "bounce_position", "velocity_before", "spin_before",
