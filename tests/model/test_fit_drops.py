@@ -23,9 +23,11 @@ def rebound_heights(noise=0.0, seed=0):
 
 
 def test_a_power_law_is_recovered_from_exact_heights_and_speeds():
+    """Exact data have no scatter to estimate a sigma from: the sigmas are given."""
     h1 = rebound_heights()
-    by_height = fit_drops(H0, h1, restitution="power")
-    by_speed = fit_drops(V0, np.sqrt(2 * G * h1), heights=False, restitution="power")
+    sd = {"sigma_before": 1e-3, "sigma_after": 1e-3}
+    by_height = fit_drops(H0, h1, restitution="power", **sd)
+    by_speed = fit_drops(V0, np.sqrt(2 * G * h1), heights=False, restitution="power", **sd)
     for res in (by_height, by_speed):
         k0 = kappa(np.exp(np.mean(np.log(V0))))  # kappa at the reference speed
         assert res["kappa_ref"].estimate == pytest.approx(k0, abs=1e-7)
@@ -34,7 +36,7 @@ def test_a_power_law_is_recovered_from_exact_heights_and_speeds():
 
 
 def test_a_constant_kappa_agrees_with_the_tabulated_model_of_one_drop():
-    res = fit_drops([1.0, 1.0], [0.64, 0.64])
+    res = fit_drops([1.0, 1.0], [0.64, 0.64], sigma_before=1e-3, sigma_after=1e-3)
     table = TabulatedRestitution.from_drop_heights([1.0], [0.64])
     assert res["kappa"].estimate == pytest.approx(float(table.kappas[0]), abs=1e-9)
 
@@ -62,7 +64,7 @@ def test_the_height_error_becomes_the_speed_error():
         (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01}, "together"),
         (([1.0, 0.5], [0.6, 0.3]), {"sigma_before": 0.01, "sigma_after": 0.0}, "> 0"),
         (([1.0, 0.5], [0.6, 0.3]), {"gravity": -9.8}, "gravity"),
-        (([1.0], [0.6]), {}, "too few usable values"),
+        (([1.0], [0.6]), {}, r"too few drops: 1 drop\(s\)"),
     ],
 )  # fmt: skip
 def test_bad_drop_tests_are_refused(args, kwargs, match):
@@ -102,3 +104,31 @@ def test_the_drop_fit_is_the_fit_of_the_drops_alone_with_its_kappa_curve():
     assert np.all(res.curve_kappa_high - res.curve_kappa_low > 0)
     low = np.interp(V0, res.curve_speed, res.curve_kappa_low)
     np.testing.assert_allclose(low, res.fitted_low[:, 1] / V0, rtol=2e-3)
+
+
+@pytest.mark.parametrize(
+    "before, after, kwargs, message",
+    [
+        ([1.0], [0.6], {}, "too few drops: 1 drop(s) for 1 free parameter(s) (kappa); need at "
+         "least 2"),
+        ([1.0, 0.5], [0.6, 0.3], {"restitution": "power"}, "too few drops: 2 drop(s) for 2 "
+         "free parameter(s) (kappa_ref, exponent); need at least 3"),
+        ([], [], {}, "no drops given: the drop and rebound heights are empty"),
+    ],
+)  # fmt: skip
+def test_too_few_drops_are_counted_in_drops(before, after, kwargs, message):
+    """The drops are counted as drops (not as the bounces of the curve drawn with them)."""
+    with pytest.raises(ValueError) as err:
+        fit_drops(before, after, **kwargs)
+    assert str(err.value) == message
+
+
+def test_identical_drops_without_sigmas_are_refused_not_given_a_zero_width_interval():
+    """Six identical drops: the scatter is 0, so no uncertainty can be estimated from it
+    (it used to give kappa = 0.8 +- 0 [0.8, 0.8] and AIC = -inf)."""
+    with pytest.raises(ValueError, match="the 6 drops show no scatter") as err:
+        fit_drops([1.0] * 6, [0.64] * 6)
+    assert "sigma_before and sigma_after" in str(err.value)
+    res = fit_drops([1.0] * 6, [0.64] * 6, sigma_before=0.002, sigma_after=0.002)
+    assert res["kappa"].estimate == pytest.approx(0.8, abs=1e-9)
+    assert res["kappa"].high - res["kappa"].low > 1e-3 and np.isfinite(res.aic)

@@ -21,8 +21,9 @@ from .fit_data import MeasuredBounces
 from .fit_models import FitModel, make_model
 from .fit_profile import Problem, curvature, intervals, minimize, threshold
 from .fit_result import FitResult, FitWarning
+from .presets import Ball
 
-__all__ = ["fit", "FitResult", "FitWarning"]
+__all__ = ["fit", "FitResult", "FitWarning", "NoScatterError"]
 
 
 def _start(fm: FitModel, bounces: MeasuredBounces, given: Mapping[str, float]) -> np.ndarray:
@@ -50,29 +51,93 @@ def _start(fm: FitModel, bounces: MeasuredBounces, given: Mapping[str, float]) -
     return np.array(theta)
 
 
-def _fixed(fm: FitModel, fixed: Mapping[str, float] | None) -> dict[str, float]:
-    if fixed is None:
+def _values(what: str, fm: FitModel, given: Mapping[str, float] | None) -> dict[str, float]:
+    """``fixed`` or ``start``: known parameter names, each value within its bounds."""
+    if given is None:
         return {}
-    if not isinstance(fixed, Mapping):
-        raise TypeError(f"fixed must be a dict of parameter name to value, got {fixed!r}")
+    if not isinstance(given, Mapping):
+        raise TypeError(f"{what} must be a dict of parameter name to value, got {given!r}")
     out = {}
-    for name, value in fixed.items():
+    for name, value in given.items():
         if name not in fm.names:
-            raise ValueError(f"fixed names an unknown parameter {name!r}; "
+            raise ValueError(f"{what} names an unknown parameter {name!r}; "
                              f"this model has {', '.join(fm.names)}")  # fmt: skip
         p = fm.parameters[fm.names.index(name)]
-        v = setting(f"fixed[{name!r}]", value)
+        v = setting(f"{what}[{name!r}]", value)
         if not p.low <= v <= p.high:
-            raise ValueError(f"fixed[{name!r}] must be in [{p.low:g}, {p.high:g}], got {value!r}")
+            raise ValueError(f"{what}[{name!r}] must be in [{p.low:g}, {p.high:g}], got {value!r}")
         out[name] = v
-    if len(out) == len(fm.names):
-        raise ValueError("every parameter is fixed: nothing to fit")
     return out
+
+
+#: A measured ``after_vy`` may pass the bounds of a rebound (``0 <= after_vy <= -vy``) by
+#: this many of its standard deviations, or, without sigmas, by this fraction of ``-vy``:
+#: near ``kappa = 0`` or ``1`` noise crosses them; beyond, the row is a mistake.
+NOISE_SIGMAS = 5.0
+NOISE_FRACTION = 0.05
+#: Rows an error names one by one; the rest are counted.
+NAMED_ROWS = 5
+
+
+def _impossible(bounces: MeasuredBounces) -> None:
+    """Refuse measured normal rebounds no impact can give, beyond the measurement's noise:
+    into the surface (``after_vy < 0``), or faster than the impact (``after_vy > -vy``)."""
+    speed, up = -bounces.vy, bounces.after_vy
+    sigma = bounces.sigma_after_vy
+    if sigma is None:
+        slack = NOISE_FRACTION * speed
+        allowance = (f"{100 * NOISE_FRACTION:g} % of the impact speed -vy without sigmas; "
+                     "give sigma_after_vy to judge by the measurement's own noise")  # fmt: skip
+    else:
+        slack = NOISE_SIGMAS * np.where(np.isnan(up), 0.0, sigma)
+        allowance = f"{NOISE_SIGMAS:g} sigma_after_vy"
+    measured = ~np.isnan(up)
+    into = measured & (np.where(measured, up, 0.0) < -slack)
+    faster = measured & (np.where(measured, up, 0.0) > speed + slack)
+    bad = np.flatnonzero(into | faster)
+    if not bad.size:
+        return
+    items = [f"after_vy = {up[i]:g} m/s at index {i} "
+             f"({'into the surface' if into[i] else 'faster than the impact'}, "
+             f"vy = {bounces.vy[i]:g} m/s)" for i in bad[:NAMED_ROWS]]  # fmt: skip
+    if bad.size > NAMED_ROWS:
+        items.append(f"and {bad.size - NAMED_ROWS} more")
+    raise ValueError(
+        "impossible rebound(s): a bounce leaves the surface (after_vy >= 0) no faster than "
+        f"it came (after_vy <= -vy), within the noise ({allowance}); got " + "; ".join(items)
+    )
+
+
+class NoScatterError(ValueError):
+    """The measured values fit the model to rounding and no sigmas were given: the one
+    standard deviation a fit estimates from the scatter would be 0, and every interval
+    of zero width."""
+
+
+def _scatter(prob: Problem, chi2: float) -> float:
+    """The variance ``s^2 = chi2/dof`` estimated from the scatter (1 with sigmas given);
+    :class:`NoScatterError` where it is 0 to rounding (``s`` below ``1e-8`` of the
+    measured values' size)."""
+    if prob.sigma_given:
+        return 1.0
+    s2 = chi2 / prob.dof
+    size = max(float(np.sqrt(np.mean(np.square(prob.observed * prob.weight)))),
+               float(np.mean(-prob.bounces.vy)))  # fmt: skip
+    if np.sqrt(s2) <= 1e-8 * size:
+        n = prob.bounces.n_observations
+        raise NoScatterError(
+            f"the {n} measured values show no scatter about the fitted model (the standard "
+            f"deviation estimated from them is {np.sqrt(s2):.3g} m/s, zero to rounding): no "
+            "uncertainty can be estimated from them, and every interval would have zero "
+            "width; give the standard deviations of the measured rebound (sigma_after_vx, "
+            "sigma_after_vy, sigma_after_omega)"
+        )
+    return s2
 
 
 def fit(
     bounces: MeasuredBounces,
-    body: Body,
+    body: Body | Ball,
     *,
     model: str = "rigid",
     restitution: str | Sequence[float] = "constant",
@@ -89,9 +154,11 @@ def fit(
     bounces : MeasuredBounces
         Incidences, measured rebounds (any value may be missing) and, optionally,
         their standard deviations.
-    body : Body
-        The body. Its radius turns spin into contact-point speed; its mass does not
-        matter (the rebound velocities do not depend on it).
+    body : Body or Ball
+        The body (a :class:`~spinimpact.Ball` is taken as its ``body``); required, as
+        its ``zeta = 1 + R^2/rho^2`` decides how much a bounce's spin changes. Its radius
+        turns spin into contact-point speed; its mass does not matter (the rebound
+        velocities do not depend on it).
     model : {"rigid", "walton", "stronge"}
         The tangential model (:data:`~spinimpact.model.fit_models.TANGENTIAL`):
         ``"rigid"`` (Coulomb friction ``mu``, the paper's closed form);
@@ -123,8 +190,18 @@ def fit(
     Raises
     ------
     TypeError, ValueError
-        For bad options, a fixed value out of range, or fewer measured values than free
-        parameters plus one ("too few usable values").
+        For bad options, a fixed or starting value outside its parameter's range, or
+        fewer measured values than free parameters plus one ("too few usable values").
+    ValueError
+        For measured rebounds no bounce can give, beyond the noise: ``after_vy < 0``
+        (into the surface) or ``after_vy > -vy`` (faster than the impact), by more than
+        5 ``sigma_after_vy``, or without sigmas by more than 5 % of ``-vy``; the error
+        names the rows (their indices) and values.
+    NoScatterError
+        A ``ValueError``: without sigmas, when the measured values fit the model to
+        rounding (identical rows, a single bounce, noise-free data): the standard
+        deviation estimated from their scatter would be 0 and every interval of zero
+        width. Give the sigmas.
 
     Warns
     -----
@@ -183,19 +260,17 @@ def fit(
     if reference_speed is not None:
         reference_speed = setting("reference_speed", reference_speed, low=0.0,
                                   rule="a speed > 0 (m/s)")  # fmt: skip
+    if isinstance(body, Ball):
+        body = body.body
     fm = make_model(body, bounces, tangential=model, restitution=restitution,
                     free_gyration=free_gyration, reference_speed=reference_speed)  # fmt: skip
-    held = _fixed(fm, fixed)
-    if start is not None and not isinstance(start, Mapping):
-        raise TypeError(f"start must be a dict of parameter name to value, got {start!r}")
-    begin = {}
-    for name, value in (start or {}).items():
-        if name not in fm.names:
-            raise ValueError(f"start names an unknown parameter {name!r}; "
-                             f"this model has {', '.join(fm.names)}")  # fmt: skip
-        begin[name] = setting(f"start[{name!r}]", value)
+    held = _values("fixed", fm, fixed)
+    if len(held) == len(fm.names):
+        raise ValueError("every parameter is fixed: nothing to fit")
+    begin = _values("start", fm, start)
+    _impossible(bounces)
     theta = _start(fm, bounces, {**begin, **held})
-    for p in fm.parameters:  # a starting value strictly inside its bounds
+    for p in fm.parameters:  # a starting value from the data, within its bounds
         i = fm.names.index(p.name)
         if p.name not in held:
             theta[i] = float(np.clip(theta[i], p.low, p.high))
@@ -213,8 +288,7 @@ def fit(
     best = minimize(prob, prob.theta[free])
     for attempt in range(3):
         x = best.x
-        chi2 = prob.chi2(x)
-        s2 = 1.0 if prob.sigma_given else chi2 / prob.dof
+        s2 = _scatter(prob, prob.chi2(x))
         cov, se = curvature(prob, x, s2)
         ivals = intervals(prob, x, conf, se)
         if ivals.better is None or attempt == 2:
@@ -235,9 +309,9 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
     chi2 = prob.chi2(x)
     dof = prob.dof
     s2 = 1.0 if prob.sigma_given else chi2 / dof
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore"):  # an infinite standard error: no correlation
         corr = cov / np.outer(se, se)
-    corr[np.isinf(np.outer(se, se))] = np.nan
+    corr[np.isinf(se)[:, None] | np.isinf(se)[None, :]] = np.nan
     np.fill_diagonal(corr, 1.0)
     fitted = fm.predict(theta, data)
     measured = data.measured
@@ -252,18 +326,18 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
     if prob.sigma_given:
         loglik = -0.5 * (chi2 + float(np.sum(np.log(2 * np.pi * prob.sigma[measured] ** 2))))
         k = x.size
-    else:
-        with np.errstate(divide="ignore"):  # a perfect fit: the likelihood is unbounded
-            loglik = -0.5 * n * (np.log(2 * np.pi * chi2 / n) + 1.0)
+    else:  # chi2 > 0: a fit without scatter was refused (_scatter)
+        loglik = -0.5 * n * (np.log(2 * np.pi * chi2 / n) + 1.0)
         loglik += float(np.sum(np.log(1.0 / prob.sigma[measured])))  # the weights' Jacobian
         k = x.size + 1
-    with np.errstate(invalid="ignore", divide="ignore"):  # sigma 0: a perfect fit, no sigma given
-        normalized = resid / sigma
+    normalized = resid / sigma
     preds = [fm.predict(prob.full(e), data) for e in ivals.ends]
     lows = np.min([fitted, *preds], axis=0)
     highs = np.max([fitted, *preds], axis=0)
+    body = {k: np.asarray(getattr(fm.body, k)).tolist() for k in ("radius", "gyration", "zeta")}
     return FitResult(
         model=fm.description,
+        body={"name": fm.body.name, **body},
         names=tuple(np.array(fm.names)[prob.free].tolist()),
         estimate=x.copy(),
         standard_error=se,

@@ -11,8 +11,9 @@ import numpy as np
 
 from .._validation import as_real_array, check, setting
 from .body import Body
-from .fit import fit
+from .fit import NoScatterError, fit
 from .fit_data import MeasuredBounces
+from .fit_models import make_model
 from .fit_result import FitResult
 from .restitution import STANDARD_GRAVITY
 
@@ -106,6 +107,14 @@ def fit_drops(
         and not reported), the drops' speeds and the fitted ``kappa(v)`` with its band
         over their range.
 
+    Raises
+    ------
+    TypeError, ValueError
+        For values that are not numbers, no drops, a rebound above its drop, fewer drops
+        than free parameters plus one ("too few drops"), or, without sigmas, drops that
+        fit ``kappa`` to rounding (identical drops: no scatter to estimate an
+        uncertainty from; a ``spinimpact.model.fit.NoScatterError``).
+
     Notes
     -----
     Each drop is a bounce with ``vx = omega = 0`` and ``vy = -v_before``; its measured
@@ -132,6 +141,8 @@ def fit_drops(
     if b.ndim != 1 or a.shape != b.shape:
         raise ValueError(f"drop and rebound {what} must be 1-D of one length, got shapes "
                          f"{b.shape} and {a.shape}")  # fmt: skip
+    if b.size == 0:
+        raise ValueError(f"no drops given: the drop and rebound {what} are empty")
     check(f"drop {what}", b, lambda x: x > 0, "> 0")
     check(f"rebound {what}", a, lambda x: x >= 0, ">= 0")
     higher = np.flatnonzero(a > b)
@@ -173,14 +184,27 @@ def _fit(v0: np.ndarray, v1: np.ndarray, sig: dict[str, Any], restitution: Any,
     data = MeasuredBounces(zeros, -speed, zeros, after_vy=after, **sig)
     body = Body.solid_sphere(mass=1.0, radius=1.0)  # drops without spin: the body plays no part
     ref = float(np.exp(np.mean(np.log(v0))))  # the power law's v_ref from the drops alone
-    res = fit(data, body, restitution=restitution, fixed={"mu": 0.0}, confidence=confidence,
-              reference_speed=ref)  # fmt: skip
+    free = make_model(body, data, restitution=restitution, reference_speed=ref).names[1:]
+    if n <= len(free):  # mu is held: the restitution's parameters are free
+        raise ValueError(f"too few drops: {n} drop(s) for {len(free)} free parameter(s) "
+                         f"({', '.join(free)}); need at least {len(free) + 1}")  # fmt: skip
+    try:
+        res = fit(data, body, restitution=restitution, fixed={"mu": 0.0},
+                  confidence=confidence, reference_speed=ref)  # fmt: skip
+    except NoScatterError:
+        raise NoScatterError(
+            f"the {n} drops show no scatter about the fitted kappa (their rebound speeds fit "
+            "it to rounding): no uncertainty can be estimated from them, and every interval "
+            "would have zero width; give the standard deviations of the measured heights or "
+            "speeds (sigma_before and sigma_after; in a file, the sigma_ columns)"
+        ) from None
     values = {f.name: getattr(res, f.name) for f in fields(FitResult)}
     for name, v in values.items():  # the measured drops' rows only
         if isinstance(v, np.ndarray) and v.shape[:1] == (n + grid.size,):
             values[name] = v[:n]
     values.update(
         model=res.model.replace("rigid, ", "drop tests, ").replace("|vy|", "|v|"),
+        body=None,  # the body plays no part in a drop without spin
         fixed={},  # mu plays no part in a drop without spin
         n_bounces=n,
         impact_speed=v0,

@@ -34,8 +34,9 @@ LAWS = {
 }
 #: Tangential models: the rigid Coulomb contact of the paper, then each compliance law.
 TANGENTIAL = ("rigid", *(k for k, v in LAWS.items() if hasattr(compliance, v[0])))
-#: A friction coefficient at which every realistic bounce sticks: the profile of ``mu``
-#: is evaluated here to decide whether the data bound ``mu`` from above at all.
+#: A friction coefficient at which every realistic bounce sticks, and the largest that
+#: :func:`~spinimpact.solve` accepts: the upper bound of ``mu`` in a fit, where its
+#: profile is evaluated to decide whether the data bound ``mu`` from above at all.
 MU_INFINITY = 1e6
 
 
@@ -193,7 +194,8 @@ def make_model(
         raise TypeError(f"model must be one of {', '.join(TANGENTIAL)}, got {tangential!r}")
     if tangential not in TANGENTIAL:
         raise ValueError(f"model must be one of {', '.join(TANGENTIAL)}, got {tangential!r}")
-    params = [Parameter("mu", 0.0, np.inf, "", "Coulomb friction coefficient")]
+    # mu is bounded by MU_INFINITY, solve's own bound: the optimizer never leaves its domain
+    params = [Parameter("mu", 0.0, MU_INFINITY, "", "Coulomb friction coefficient")]
     if tangential in LAWS:
         _, name, low, high, meaning = LAWS[tangential]
         params.append(Parameter(name, low, high, "", meaning))

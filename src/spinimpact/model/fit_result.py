@@ -52,7 +52,13 @@ class FitResult(Result):
     Attributes
     ----------
     model : str
-        The model in words.
+        The model in words: the tangential law and the normal restitution.
+    body : dict or None
+        The body fitted for: its ``name``, ``radius`` and ``gyration`` (m) and
+        ``zeta = 1 + R^2/rho^2``, as given (a fitted gyration is among the
+        parameters); ``None`` for drop tests, where the body plays no part. A radius
+        and gyration of ``None`` (from ``spinimpact fit`` without ``--radius``): not
+        given, as without spin the radius plays no part.
     names : tuple of str
         The fitted (free) parameters, in the order of every parameter array.
     estimate, standard_error : ndarray
@@ -115,6 +121,7 @@ class FitResult(Result):
     """
 
     model: str
+    body: dict | None
     names: tuple
     estimate: Array
     standard_error: Array
@@ -225,4 +232,6 @@ class FitResult(Result):
 
     def __repr__(self) -> str:
         parts = "; ".join(str(self[n]) for n in self.names)
-        return f"<FitResult {self.model}: {parts}; chi2/dof = {self.chi2:.4g}/{self.dof}>"
+        body = f", body {self.body['name']}" if self.body else ""
+        return (f"<FitResult {self.model}{body}: {parts}; "
+                f"chi2/dof = {self.chi2:.4g}/{self.dof}>")  # fmt: skip
