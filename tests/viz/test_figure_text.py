@@ -106,7 +106,12 @@ def _problems(fig):
         for line in lines:
             if _crossing(box, line, renderer):
                 out.append(f"{_name(text)!r} on line {line.get_label()!r}")
-    legend_texts = {id(t) for ax in _axes(fig) if ax.get_legend() for t in ax.get_legend().texts}
+    legend_texts = {
+        id(t)
+        for ax in _axes(fig)
+        if ax.get_legend()
+        for t in (*ax.get_legend().texts, ax.get_legend().get_title())
+    }
     for i, (a, box_a) in enumerate(zip(texts, boxes, strict=True)):
         for b, box_b in zip(texts[i + 1 :], boxes[i + 1 :], strict=True):
             inside_legend = {id(a), id(b)} & legend_texts or "Legend" in type(a).__name__

@@ -19,6 +19,8 @@ from spinimpact.viz.plots import (
     plot_routh,
 )
 
+from tests.viz.layout import ATTACHED, legend_gaps
+
 matplotlib = pytest.importorskip("matplotlib")
 
 
@@ -91,6 +93,14 @@ def test_paper_figures_are_in_their_regimes(name, regime):
     if name.startswith("fig5"):
         case = {"fig5a": "Fig. 5a", "fig5b": "Fig. 5b", "fig5c": "Fig. 5c"}[name]
         assert case in fig.get_axes()[0].get_title()
+
+
+@pytest.mark.parametrize("name", sorted(PAPER_FIGURES))
+def test_paper_figures_legends_sit_at_their_panels(name):
+    """Figs. 5a-c once put the works' legend in the figure's corner, a quarter inch below
+    the panel it explains."""
+    gaps = legend_gaps(paper_figure(name))
+    assert all(gap < ATTACHED for gap in gaps), gaps
 
 
 def test_unknown_paper_figure():
@@ -168,6 +178,25 @@ def test_map_figure_panels():
     # every panel carries the four boundary lines |a + b| = zeta mu, (1 + kappa) zeta mu
     regime_ax = fig.get_axes()[0]
     assert len(regime_ax.get_lines()) == 4
+
+
+def test_friction_work_panel_shows_no_line_where_the_ratio_is_undefined():
+    """On the no-slip line ``u^- = 0`` friction does no work and ``W_r^t/W_c^t`` is 0/0;
+    its limit from both sides is 0 (the contact sticks in compression). Drawn as
+    missing, those pixels once showed a dotted white line along the panel's diagonal."""
+    fig = plot_map(Body.solid_sphere(mass=1.0, radius=0.1), mu=0.2, kappa=0.8, n=41)
+    (panel,) = [ax for ax in fig.get_axes() if "friction work" in ax.get_title()]
+    (image,) = panel.get_images()
+    data = image.get_array()
+    missing = np.ma.getmaskarray(np.ma.masked_invalid(data))
+    assert missing.any()  # the grid is symmetric: (a, -a) lies on the line u^- = 0
+    colours = image.to_rgba(data)
+    np.testing.assert_array_equal(
+        colours[missing], np.broadcast_to(image.to_rgba(0.0), colours[missing].shape)
+    )
+    no_friction = plot_map(Body.solid_sphere(mass=1.0, radius=0.1), mu=0.0, kappa=0.8, n=8)
+    (panel,) = [ax for ax in no_friction.get_axes() if "friction work" in ax.get_title()]
+    assert "undefined" in panel.get_title()  # no friction: undefined everywhere, and said
 
 
 def test_map_command(tmp_path):

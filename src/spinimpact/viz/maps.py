@@ -187,7 +187,9 @@ def plot_map(
     -----
     Only the regimes and outcomes that can occur are offered in the legends
     (:func:`map_regimes`, :func:`map_outcomes`, which proves that no rebound is both
-    backward and spin-reversed).
+    backward and spin-reversed). On the line ``u^- = 0`` friction does no work and
+    ``W_r^t/W_c^t`` is 0/0; the panel shows it in the colour of its limit from both
+    sides, 0 (the contact sticks during compression), not as a gap.
     """
     if dpi is not None:
         n = max(2, min(n, _panel_pixels(body, mu, kappa, extent, dpi)))
@@ -195,6 +197,7 @@ def plot_map(
 
 
 def _draw(body, mu: float, kappa: float, a: np.ndarray, b: np.ndarray, f: dict) -> Figure:
+    from matplotlib import colormaps
     from matplotlib.colors import ListedColormap
     from matplotlib.figure import Figure
 
@@ -241,9 +244,12 @@ def _draw(body, mu: float, kappa: float, a: np.ndarray, b: np.ndarray, f: dict) 
     show(axes[1, 0], f["impulse_ratio"], title, "RdBu_r", r"$\hat\mu$", vmin=-top, vmax=top)
     ratio = r"$W_r^t/W_c^t$"
     undefined = "" if mu > 0 else ": undefined, no friction work"
+    magma = colormaps["magma"]
+    if mu > 0:  # on the line u^- = 0 the ratio is 0/0; from either side it tends to 0
+        magma = magma.with_extremes(bad=magma(0.0))
     show(
         axes[1, 1], f["work_ratio_tangential"], f"friction work ratio {ratio}{undefined}",
-        "magma", ratio,
+        magma, ratio,
         vmin=0, vmax=max(kappa, 1e-9),
     )  # fmt: skip
     slip = r"$u^+/|v^-|$"

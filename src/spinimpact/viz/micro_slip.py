@@ -109,7 +109,18 @@ def plot_micro_slip(law: MindlinDeresiewicz, body: Body, vx: Any, vy: Any, omega
     for ax in axes:
         ax.set_xlabel("time over the contact time")
         ax.grid(alpha=0.3)
-    axes[1].legend(title="incidence of the contact point", fontsize="small")
-    fig.suptitle(f"{law!r}: mu = {float(mu):g}, kappa = {float(kappa):g}, "
-                 f"zeta = {float(body.zeta):.4g}", fontsize="medium")  # fmt: skip
+    # beside the last panel, where no curve runs
+    axes[2].legend(*axes[1].get_legend_handles_labels(), title="incidence of the contact point",
+                   fontsize="small", title_fontsize="small", loc="upper left",
+                   bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # fmt: skip
+    fig.suptitle(f"Mindlin-Deresiewicz micro-slip, {_stiffness(law)}: $\\mu$ = {float(mu):g}, "
+                 f"$\\kappa$ = {float(kappa):g}, $\\zeta$ = {float(body.zeta):.4g}",
+                 fontsize="medium")  # fmt: skip
     return fig
+
+
+def _stiffness(law: MindlinDeresiewicz) -> str:
+    """The law's elastic input in words: Poisson's ratio, or the stiffness ratio given."""
+    if law.poisson_ratio is not None:
+        return f"Poisson's ratio $\\nu$ = {law.poisson_ratio:g}"
+    return f"stiffness ratio $4G^*/E^*$ = {law.stiffness_ratio:g}"

@@ -147,8 +147,9 @@ def plot_energy(imp: Impact, n: int = 401) -> Figure:
     bx.axhline(0, color="0.4", lw=0.8)
     bx.set_xticks(x, phases)
     bx.set_ylabel("work (J)")
-    fig.legend(loc="outside lower right", ncol=2)  # below the bars
-    bx.set_title("works by phase", fontsize="medium")
+    # the panel's title and key in one, on top of the bars' panel, where no bar reaches
+    bx.legend(title="works by phase", title_fontsize="medium", loc="lower center",
+              bbox_to_anchor=(0.5, 1.0), ncols=2, frameon=False, borderaxespad=0.2)  # fmt: skip
     fig.suptitle(_title(imp))
     return fig
 
