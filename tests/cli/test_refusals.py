@@ -20,3 +20,13 @@ def test_a_grazing_sphere_is_refused_as_solve_refuses_vy(cli):
     status, out, err = cli("sphere", "--velocity", "1,-1e-300,0")
     assert_one_line(status, out, err, "normal velocity must be <= -1e-50")
     assert "division" not in err
+
+
+def test_a_map_of_a_tiny_body_is_drawn(cli, tmp_path):
+    """The maps are dimensionless: a body of 1e-49 m gets the same map as any other (its
+    spins R omega/|vy| = 3 used to overflow a float32 cast)."""
+    target = tmp_path / "map.png"
+    status, out, err = cli("map", "--radius", 1e-49, "--output", target, "--resolution", 20,
+                           "--dpi", 50)  # fmt: skip
+    assert status == 0, err
+    assert target.stat().st_size > 0

@@ -15,7 +15,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._validation import scalar
 from ..core import regime_thresholds
+from ..model.body import Body
 from ._labels import mathtext_escape
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -44,6 +46,20 @@ def _grid(extent: float, n: Any) -> np.ndarray:
     return np.linspace(-extent, extent, int(n))
 
 
+def _inputs(body: Any, mu: Any, kappa: Any) -> tuple[float, float]:
+    """A map's ``mu`` and ``kappa`` as floats, once ``body`` is known to be a
+    :class:`~spinimpact.Body`: a map is drawn at one friction and one restitution."""
+    if not isinstance(body, Body):
+        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
+    if callable(kappa):
+        raise TypeError(
+            f"kappa must be a number in [0, 1], not a restitution model: the maps are drawn "
+            f"at one restitution over every impact speed, got {kappa!r}"
+        )
+    why = "a map is drawn at one mu and one kappa"
+    return scalar("mu", mu, why=why), scalar("kappa", kappa, why=why)
+
+
 def _radius(body: Any) -> float:
     radius = np.asarray(body.radius)
     if radius.ndim:
@@ -63,6 +79,7 @@ def incidence_grid(body, *, mu: float, kappa: float, extent: float = 3.0, n: int
     """
     from ..model.impact import solve
 
+    mu, kappa = _inputs(body, mu, kappa)
     a = _grid(extent, n)
     b = a.copy()
     imp = solve(body, a[None, :], -1.0, b[:, None] / _radius(body), mu=mu, kappa=kappa)
@@ -112,24 +129,35 @@ def map_fields(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 4
         Each ``(n, n)``, indexed ``[b, a]``: ``regime`` (int8, index into
         :func:`map_regimes`), ``outcome`` (int8, index into :func:`map_outcomes`), and,
         as float32, ``dissipated_fraction``, ``impulse_ratio``, ``work_ratio_tangential``,
-        ``slip_after`` (``u^+/|v^-|``), ``after_vx`` and ``after_omega`` (for the lines
-        ``vx^+ = 0`` and ``omega^+ = 0``).
+        ``slip_after`` (``u^+/|v^-|``) and ``after_vx`` (m/s at ``|v^-|`` = 1 m/s), and, as
+        float64, ``after_omega`` (rad/s of ``body``), for the lines ``vx^+ = 0`` and
+        ``omega^+ = 0``.
+
+    Notes
+    -----
+    The grid is solved for a body of ``body``'s ``zeta`` with unit mass and radius (``R
+    omega = b``), since nothing else of the body changes a map: so any radius the solver
+    accepts gives the same map, where ``omega = b/R`` would leave the accepted range for
+    a tiny radius. Only ``after_omega`` is converted to the body's spin, ``R omega^+/R``.
     """
     from ..model.impact import solve
 
+    mu, kappa = _inputs(body, mu, kappa)
     a = _grid(extent, n)
     b = a.copy()
     radius = _radius(body)
+    unit = Body.from_zeta(mass=1.0, radius=1.0, zeta=float(body.zeta))
     n = a.size
     regimes = map_regimes(mu, kappa)
     code = {name: i for i, name in enumerate(regimes)} | {"no-slip": 0}
     floats = ("dissipated_fraction", "impulse_ratio", "work_ratio_tangential", "slip_after")
     out = {k: np.empty((n, n), np.int8) for k in ("regime", "outcome")}
-    out |= {k: np.empty((n, n), np.float32) for k in (*floats, "after_vx", "after_omega")}
+    out |= {k: np.empty((n, n), np.float32) for k in (*floats, "after_vx")}
+    out["after_omega"] = np.empty((n, n))  # float64: a tiny body's spins overflow float32
     step = max(1, BLOCK // n)
     for start in range(0, n, step):
         rows = slice(start, start + step)
-        imp = solve(body, a[None, :], -1.0, b[rows, None] / radius, mu=mu, kappa=kappa)
+        imp = solve(unit, a[None, :], -1.0, b[rows, None], mu=mu, kappa=kappa)
         names, inverse = np.unique(imp.regime, return_inverse=True)
         out["regime"][rows] = np.array([code[str(x)] for x in names], np.int8)[inverse]
         o = imp.outcome
@@ -138,7 +166,7 @@ def map_fields(body, *, mu: float, kappa: float, extent: float = 3.0, n: int = 4
         out["outcome"][rows] = np.where(o.backward, 1, np.where(o.reversed_spin, 2, 0))
         for k in floats:
             out[k][rows] = getattr(imp, k)
-        out["after_vx"][rows], out["after_omega"][rows] = imp.after.vx, imp.after.omega
+        out["after_vx"][rows], out["after_omega"][rows] = imp.after.vx, imp.after.omega / radius
     return a, b, out
 
 
@@ -183,6 +211,14 @@ def plot_map(
         pixels a panel spans, since more points would add no pixel. ``None``: ``n``
         as given.
 
+    Raises
+    ------
+    TypeError
+        A ``body`` that is not a :class:`~spinimpact.Body`, or a ``mu`` or ``kappa`` that
+        is not a number (a restitution model included: a map is drawn at one ``kappa``).
+    ValueError
+        ``mu`` or ``kappa`` out of range or not a single number, a body of many sizes.
+
     Notes
     -----
     Only the regimes and outcomes that can occur are offered in the legends
@@ -191,6 +227,7 @@ def plot_map(
     ``W_r^t/W_c^t`` is 0/0; the panel shows it in the colour of its limit from both
     sides, 0 (the contact sticks during compression), not as a gap.
     """
+    mu, kappa = _inputs(body, mu, kappa)
     if dpi is not None:
         n = max(2, min(n, _panel_pixels(body, mu, kappa, extent, dpi)))
     return _draw(body, mu, kappa, *map_fields(body, mu=mu, kappa=kappa, extent=extent, n=n))

@@ -75,11 +75,21 @@ def _title(imp: Impact) -> str:
 _TAU = r"normal impulse $\tau$ (N s)"
 
 
+def _impact(imp: object) -> Impact:
+    """``imp`` if it is an :class:`~spinimpact.Impact`, else a ``TypeError`` naming it."""
+    if not isinstance(imp, Impact):
+        raise TypeError(
+            f"imp must be a spinimpact.Impact (what spinimpact.solve returns), "
+            f"got {type(imp).__name__}"
+        )
+    return imp
+
+
 def plot_history(imp: Impact, n: int = 401) -> Figure:
     """Force ratio ``F/N``, normal velocity ``v``, slip ``u`` and spin ``omega``
     against the normal impulse ``tau``, with ``tau0``, ``tau*``, ``tau1`` marked
     (the paper's Figs. 2 and 3)."""
-    h = imp.history(n)
+    h = _impact(imp).history(n)
     fig = _figure(figsize=(8, 6.4))
     axes = fig.subplots(2, 2, sharex=True)
     panels = (
@@ -103,7 +113,7 @@ def plot_history(imp: Impact, n: int = 401) -> Figure:
 def plot_routh(imp: Impact, n: int = 401) -> Figure:
     """Routh's impact diagram: friction impulse ``f`` against normal impulse
     ``tau`` (the paper's Fig. 4), with the Coulomb cone ``|f| = mu tau``."""
-    h = imp.history(n)
+    h = _impact(imp).history(n)
     fig = _figure(figsize=(6, 4.4))
     ax = fig.subplots()
     mu = float(imp.mu)
@@ -124,7 +134,7 @@ def plot_energy(imp: Impact, n: int = 401) -> Figure:
     """Kinetic energy ``E(tau)`` with its minimum ``E_m`` at ``tau_m`` marked (the
     paper's Fig. 5; the values are in the panel's title, clear of every line), and the
     works of the normal and friction forces by phase."""
-    h = imp.history(n)
+    h = _impact(imp).history(n)
     fig = _figure(figsize=(9, 4.2))
     ax, bx = fig.subplots(1, 2, width_ratios=[3, 2])
     ax.plot(h.tau, h.kinetic_energy, color="C2", lw=2)
@@ -183,6 +193,8 @@ def paper_figure(name: str) -> Figure:
     from ..model.body import Body
     from ..model.impact import solve
 
+    if not isinstance(name, str):
+        raise TypeError(f"name must be one of {', '.join(PAPER_FIGURES)}; got {name!r}")
     if name not in PAPER_FIGURES:
         raise ValueError(f"figure must be one of {', '.join(PAPER_FIGURES)}; got {name!r}")
     kind, vx, caption = PAPER_FIGURES[name]
@@ -196,6 +208,13 @@ def plot_simulation(sim) -> Figure:
     """Normal and friction force, velocities and slip of a compliant impact
     against time (:func:`spinimpact.dynamics.simulate`), with the end of
     compression and the stick instant marked."""
+    from ..model.dynamics import Simulation
+
+    if not isinstance(sim, Simulation):
+        raise TypeError(
+            "sim must be a Simulation (what spinimpact.dynamics.simulate returns), "
+            f"got {type(sim).__name__}"
+        )
     fig = _figure(figsize=(10, 6.4))
     axes = fig.subplots(2, 2, sharex=True)
     t = sim.t * 1e3
