@@ -110,6 +110,7 @@ DROP_AND_RUN = """
     with contextlib.redirect_stdout(io.StringIO()):
         spinimpact.cli.main(sys.argv[1:-1] + [scratch])
     os.remove(scratch)
+    os.remove(scratch[: -len(".csv")] + ".units.json")  # the CSV's side file of units
     os.setgroups([]); os.setgid(65534); os.setuid(65534)
     spinimpact.cli.main(sys.argv[1:])
 """
@@ -156,12 +157,17 @@ def test_a_killed_runs_temporary_is_removed_by_the_next_run(tmp_path):
             assert proc.poll() is None and time.monotonic() < deadline, "no temporary seen"
             time.sleep(0.01)
         proc.kill()  # SIGKILL: nothing can clean up in the process itself
-    (left,) = [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
-    assert left.startswith(f".out.csv.{TEMPORARY_TAG}-")
+    left = sorted(p.name for p in tmp_path.iterdir() if p.name.startswith("."))
+    assert [name.split(TEMPORARY_TAG)[0] for name in left] == [".out.csv.", ".out.units.json."]
     small = incidences(tmp_path / "small.csv")
     run = spinimpact("batch", small, "--output", tmp_path / "other.csv")
     assert run.returncode == 0, run.stderr
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "other.csv", "small.csv"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == [
+        "in.csv",
+        "other.csv",
+        "other.units.json",
+        "small.csv",
+    ]
 
 
 def run_main(capsys, monkeypatch, *args, stdin=None):
@@ -227,4 +233,5 @@ def test_dash_reads_standard_input_and_writes_standard_output(tmp_path):
     assert run.returncode == 0, run.stderr
     assert run.stdout == by_file.read_text()  # the same rows, byte for byte
     assert run.stderr.strip() == "wrote 50 rows to -"  # the summary keeps out of the data
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "out.csv"]
+    # standard output has no side file of units: only the file output's is there
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "out.csv", "out.units.json"]

@@ -17,6 +17,8 @@ from typing import Any
 import click
 
 from ..model.planar import LAWS
+from ..model.registry import problem as get_problem
+from ..model.registry import problems
 from ._common import DEFAULTS, body_options, progress, surface_options
 from ._compliance import tangential_law, tangential_options
 
@@ -121,12 +123,16 @@ def batch_command(
 
     def check_kind(kind: str) -> None:
         given = [f"--{n}" for n in _PAPER_OPTIONS if _given(ctx, n)]
-        what = "free planar bodies" if kind == "planar" else "pendulums"
+        what = {"planar": "free planar bodies", "pendulum": "pendulums"}.get(kind)
         law = defaults["tangential"]
-        if kind != "paper" and law is not None:
-            raise click.UsageError(f"--tangential {law.name} applies to the paper's bodies, "
-                                   f"but the columns of {source} describe {what}")  # fmt: skip
-        if kind != "paper" and given:
+        if law is not None and not get_problem(kind).tangential:
+            names = [p.name for p in problems() if p.tangential]
+            raise click.UsageError(
+                f"--tangential {law.name} applies to the paper's bodies and to spheres in 3D "
+                f"(problems {', '.join(names)}), but the columns of {source} describe "
+                f"{what or get_problem(kind).summary}"
+            )
+        if what is not None and given:
             raise click.UsageError(
                 f"{given[0]} describes the paper's bodies, but the columns of {source} describe "
                 f"{what}: their mass and geometry come from the file"

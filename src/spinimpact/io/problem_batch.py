@@ -1,0 +1,233 @@
+"""Batch files of any registered problem, read and checked from its declaration.
+
+:func:`~spinimpact.io.batch.run_batch` solves a file of spheres, of pairs, or of any
+problem registered with :func:`spinimpact.register`, through :class:`ProblemBatch`: the
+problem's :class:`~spinimpact.Input` declarations say which columns the file must have,
+which it may have (and their defaults), each column's rules, and which columns make a
+vector (given whole or not at all); its solver solves the good rows of a chunk at once,
+and its result's columns are written after the file's own, each with its unit.
+
+A bad row (a cell that is not a number or breaks its input's rule, a preset that does
+not exist, a row the solver refuses, a result that is not finite) is named by its row,
+line and column; the solver's refusal is found by halving the chunk's rows until the
+row that breaks it is alone, so one bad row costs a few solves of the chunk, not one per
+row.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from ..model.registry import Problem
+from ._tables import BatchError, Chunk, check_header, chunk_numbers
+
+__all__ = ["ProblemBatch", "result_kinds"]
+
+_INDEX = re.compile(r" \(first offending index [0-9, ()]*\)")
+_KIND = {"b": "flag", "U": "text", "S": "text", "O": "text"}
+
+
+@functools.cache
+def _kinds(problem: Problem, law: Any) -> dict[str, str]:
+    columns = problem.solve(tangential=law, **problem.example).columns()
+    return {n: _KIND.get(np.asarray(c).dtype.kind, "float") for n, c in columns.items()}
+
+
+def result_kinds(problem: Problem, tangential: Any = None) -> dict[str, str]:
+    """Each result column of ``problem`` -> ``"float"``, ``"text"`` or ``"flag"``, from its
+    example (:attr:`Problem.example`) solved once under the ``tangential`` law."""
+    return _kinds(problem, tangential)
+
+
+def _text(cells: np.ndarray) -> np.ndarray:
+    out = np.empty(cells.size, dtype=object)  # cell by cell: no fixed-width copy
+    out[:] = [("" if c is None else str(c)).strip() for c in cells.tolist()]
+    return out
+
+
+class ProblemBatch:
+    """How :func:`~spinimpact.io.batch.run_batch` solves a file of one registered problem.
+
+    Parameters
+    ----------
+    problem : Problem
+        The problem the file holds.
+    header : list of str
+        The file's columns.
+    skip : bool
+        Whether bad rows are written with an ``error`` column (else the first stops the run).
+    defaults : dict
+        Values for inputs a file lacks or leaves empty, by input name; a vector's name
+        (``normal``) may give all its components as a 3-sequence. ``None`` values and
+        missing keys take the declaration's defaults; ``tangential`` is the tangential law.
+
+    Raises
+    ------
+    BatchError
+        For a vector given in part, a required column that is missing (without a default),
+        or a header the run cannot use.
+
+    Attributes
+    ----------
+    kinds : dict
+        Output column -> ``"float"``, ``"text"`` or ``"flag"``, in the order written.
+    numeric : tuple of str
+        The numeric input columns the file holds (typed ``float64`` in Parquet output).
+    """
+
+    def __init__(self, problem: Problem, header: list[str], skip: bool, defaults: dict) -> None:
+        self.problem, self.header = problem, list(header)
+        self.law = defaults.get("tangential")
+        if self.law is not None and not problem.tangential:
+            raise BatchError(
+                f"a tangential law does not apply to problem {problem.name!r} ({problem.summary})"
+            )
+        self.defaults = self._defaults(defaults)
+        for vector, parts in problem.vectors().items():
+            have = [p for p in parts if p in header]
+            if have and len(have) < len(parts):
+                missing = [p for p in parts if p not in header]
+                raise BatchError(
+                    f"columns {', '.join(have)} give the {vector} in part: add "
+                    f"{', '.join(missing)}, or drop them to use the default "
+                    f"{self._shown(parts)}"
+                )
+        required = tuple(
+            i.name for i in problem.inputs if i.required and self.defaults.get(i.name) is None
+        )
+        self.numeric = tuple(i.name for i in problem.inputs if not i.text and i.name in header)
+        kinds = result_kinds(problem, self.law)
+        self.kinds = {n: kinds[n] for n in problem.outputs(header)}
+        check_header(header, skip, self.kinds, required)
+
+    def _defaults(self, given: dict[str, Any]) -> dict[str, Any]:
+        out = {}
+        vectors = self.problem.vectors()
+        for each in self.problem.inputs:
+            value = given.get(each.name)
+            if value is None and each.vector in given and given[each.vector] is not None:
+                value = list(given[each.vector])[vectors[each.vector].index(each.name)]
+            if value is not None:
+                found = each.problems(np.asarray([value], dtype=object if each.text else float))
+                if found[0]:
+                    raise ValueError(f"default {found[0]}")
+            out[each.name] = each.default if value is None else value
+        return out
+
+    def _shown(self, parts: tuple[str, ...]) -> str:
+        values = [self.defaults.get(p) for p in parts]
+        if any(v is None for v in values):
+            return "(none: the problem needs them)"
+        return "(" + ", ".join(f"{float(v):g}" for v in values) + ")"
+
+    def solve(self, chunk: Chunk) -> tuple[dict, dict, np.ndarray]:
+        """Solve one chunk: (input numbers, output columns, error message per row)."""
+        n = chunk.messages.size
+        found: list[tuple[int, str]] = []
+
+        def note(i: int, message: str) -> None:
+            found.append((i, message))
+
+        values: dict[str, np.ndarray] = {}
+        for each in self.problem.inputs:
+            default = self.defaults.get(each.name)
+            if each.text:
+                values[each.name] = self._names(chunk, each, default, note)
+            elif each.name in chunk.columns:
+                values[each.name] = chunk_numbers(
+                    chunk, each.name, default, note, each.problems, required=not each.optional
+                )
+            else:
+                values[each.name] = np.full(n, np.nan if default is None else float(default))
+        self._presets(chunk, values, note)
+        messages = chunk.messages.copy()
+        for i, message in sorted(found, key=lambda item: item[0]):
+            messages[i] = messages[i] or message
+        results = {
+            name: np.full(n, np.nan) if kind == "float" else np.full(n, None, object)
+            for name, kind in self.kinds.items()
+        }
+        self._solve_rows(np.flatnonzero(messages == ""), chunk, values, results, messages)
+        return {k: v for k, v in values.items() if k in self.numeric}, results, messages
+
+    def _names(self, chunk: Chunk, each: Any, default: Any, note: Callable) -> np.ndarray:
+        n = chunk.messages.size
+        names = np.full(n, "" if default is None else default, dtype=object)
+        if each.name in chunk.columns:
+            cells = _text(chunk.columns[each.name])
+            given = ~chunk.empty[each.name] & (cells != "")
+            names[given] = cells[given]
+            for i in np.flatnonzero(given & ~np.isin(names, each.choices)):
+                note(
+                    i,
+                    f"{chunk.where(i, each.name)}: must be one of {', '.join(each.choices)}; "
+                    f"got {str(cells[i])!r}",
+                )
+        return names
+
+    def _presets(self, chunk: Chunk, values: dict, note: Callable) -> None:
+        """A row gives a preset or its own radius of gyration, not both; a preset in the row
+        wins over a default radius of gyration."""
+        for each in self.problem.inputs:
+            if not (each.name.startswith("gyration") and each.optional):
+                continue
+            preset = "body" + each.name[len("gyration") :]
+            if preset not in values:
+                continue
+            own = (each.name in chunk.columns) & ~chunk.empty.get(each.name, True)
+            if preset in chunk.columns:
+                given = ~chunk.empty[preset]
+                for i in np.flatnonzero(given & own):
+                    note(
+                        i,
+                        f"{chunk.where(i, preset)}: give either {preset} or {each.name}, not both",
+                    )
+                values[each.name] = np.where(given & ~own, np.nan, values[each.name])
+
+    def _solve_rows(self, rows, chunk, values, results, messages) -> None:
+        """Solve ``rows`` at once; where that fails, halve them to name the bad rows."""
+        if rows.size == 0:
+            return
+        try:
+            with np.errstate(all="ignore"):
+                columns = self.problem.solver(
+                    {k: v[rows] for k, v in values.items()}, tangential=self.law
+                ).columns()
+        except (ValueError, TypeError, ArithmeticError) as exc:
+            if rows.size == 1:
+                text = _INDEX.sub("", str(exc))  # one row: no index within it to name
+                messages[rows[0]] = f"{chunk.where(int(rows[0]))}: {text}"
+                return
+            half = rows.size // 2
+            for part in (rows[:half], rows[half:]):
+                self._solve_rows(part, chunk, values, results, messages)
+            return
+        bad = np.zeros(rows.size, bool)
+        first: list[str | None] = [None] * rows.size
+        for name, column in results.items():
+            solved = np.asarray(columns[name])
+            if self.kinds[name] == "float":
+                column[rows] = solved
+                wrong = ~np.isfinite(solved)
+                if name in self.problem.may_be_infinite:
+                    wrong &= ~np.isinf(solved)
+                if name in self.problem.may_be_nan:
+                    wrong &= ~np.isnan(solved)
+                for k in np.flatnonzero(wrong & ~bad):
+                    first[k] = f"{name} is {float(solved[k])!r}"
+                bad |= wrong
+            else:
+                column[rows] = solved.tolist()
+        for k in np.flatnonzero(bad):
+            i = int(rows[k])
+            messages[i] = (
+                f"{chunk.where(i)}: {first[k]}, not a finite number: the row's "
+                "numbers are too far apart in scale for double precision"
+            )
+            for name, column in results.items():
+                column[i] = np.nan if self.kinds[name] == "float" else None

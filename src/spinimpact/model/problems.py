@@ -1,0 +1,360 @@
+"""The built-in impact problems, each declared once (:mod:`spinimpact.model.registry`).
+
+=========  =====================================================================  ==============
+problem    what it solves                                                         solver
+=========  =====================================================================  ==============
+paper      a disk, ring, sphere, shell or spool on a plane (Lubarda 2010)         ``solve``
+planar     a free planar body touching at an offset from its centre of mass       ``solve_planar``
+pendulum   a rigid pendulum on a fixed pivot striking the surface                 ``solve_pendulum``
+sphere     a sphere in 3D, any spin vector, on a fixed, moving or tilted plane    ``solve_sphere``
+pair       two spheres in 3D                                                      ``solve_pair``
+=========  =====================================================================  ==============
+
+Every solver here is the package's own function, called once over all rows; the
+declarations add nothing to the physics.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .body import PRESETS, Body
+from .impact import Impact, solve
+from .pair import PairImpact, solve_pair
+from .planar import LAWS, PendulumImpact, PlanarImpact, solve_pendulum, solve_planar
+from .planar_body import Pendulum, PlanarBody
+from .registry import Input, Problem, register
+from .sphere3d import SphereImpact, Surface, solve_sphere
+
+__all__ = ["PAPER", "PLANAR", "PENDULUM", "SPHERE", "PAIR", "SPHERE_PRESETS"]
+
+#: The presets of :data:`~spinimpact.model.body.PRESETS` that are spheres.
+SPHERE_PRESETS = ("solid-sphere", "spherical-shell")
+
+
+def _surface() -> tuple[Input, ...]:
+    return (
+        Input("mu", "1", "Coulomb friction coefficient", 0.2, rule="mu", fittable=True),
+        Input("kappa", "1", "coefficient of restitution", 0.8, rule="kappa", fittable=True),
+    )
+
+
+def _body(presets: tuple[str, ...], default: str, suffix: str = "", who: str = "") -> tuple:
+    return (
+        Input(
+            f"body{suffix}",
+            None,
+            f"{who}body preset (or give gyration{suffix})",
+            default,
+            choices=presets,
+        ),
+        Input(f"mass{suffix}", "kg", f"{who}mass", 1.0, rule="mass"),
+        Input(f"radius{suffix}", "m", f"{who}radius", 0.1, rule="radius"),
+        Input(
+            f"gyration{suffix}",
+            "m",
+            f"{who}radius of gyration about the centre (replaces the preset)",
+            rule="gyration",
+            optional=True,
+            fittable=True,
+        ),
+    )
+
+
+def _vector(prefix: str, unit: str, what: str, vector: str, suffix: str = "", default=None):
+    return tuple(
+        Input(
+            f"{prefix}{c}{suffix}",
+            unit,
+            f"{what}, {c} component",
+            None if default is None else default[k],
+            vector=vector + suffix,
+        )
+        for k, c in enumerate("xyz")
+    )
+
+
+def _one_body(c: dict[str, np.ndarray], suffix: str = "") -> Body:
+    gyration = c[f"gyration{suffix}"]
+    preset = np.where(np.isnan(gyration), c[f"body{suffix}"], "")
+    return Body.from_columns(
+        mass=c[f"mass{suffix}"], radius=c[f"radius{suffix}"], preset=preset, gyration=gyration
+    )
+
+
+def _stack(c: dict[str, np.ndarray], *names: str) -> np.ndarray:
+    return np.stack([c[n] for n in names], -1)
+
+
+# -- the paper's bodies ------------------------------------------------------------------
+def _solve_paper(c: dict[str, np.ndarray], tangential: Any = None) -> Impact:
+    return solve(
+        _one_body(c),
+        c["vx"],
+        c["vy"],
+        c["omega"],
+        mu=c["mu"],
+        kappa=c["kappa"],
+        tangential=tangential,
+    )
+
+
+PAPER = register(
+    Problem(
+        "paper",
+        "a spinning disk, ring, sphere, shell or spool on a fixed rough plane (Lubarda 2010)",
+        (
+            Input("vx", "m/s", "centre velocity along the surface"),
+            Input(
+                "vy", "m/s", "centre velocity normal to the surface (< 0: approaching)", rule="vy"
+            ),
+            Input("omega", "rad/s", "spin, counter-clockwise positive"),
+            *_surface(),
+            *_body(tuple(PRESETS), "solid-sphere"),
+        ),
+        _solve_paper,
+        Impact,
+        tangential=True,
+        example={"vx": 3.0, "vy": -4.0, "omega": 10.0},
+    )
+)
+
+
+# -- planar bodies and pendulums -----------------------------------------------------------
+def _laws(c: dict[str, np.ndarray], solve_one) -> Any:
+    """Solve each law's rows at once and put the columns back in row order."""
+    law = c["law"]
+    used = [each for each in LAWS if (law == each).any()]
+    if len(used) == 1:
+        return solve_one(c, used[0])
+    return _Merged(
+        {
+            each: (law == each, solve_one({k: v[law == each] for k, v in c.items()}, each))
+            for each in used
+        }
+    )
+
+
+class _Merged:
+    """The columns of several results, each over some rows, as one result's ``columns()``."""
+
+    def __init__(self, parts: dict[str, tuple[np.ndarray, Any]]) -> None:
+        self.parts = parts
+
+    def columns(self) -> dict[str, np.ndarray]:
+        out: dict[str, np.ndarray] = {}
+        n = next(iter(self.parts.values()))[0].size
+        for rows, result in self.parts.values():
+            for name, column in result.columns().items():
+                column = np.asarray(column)
+                if name not in out:
+                    out[name] = np.empty(
+                        n, dtype=column.dtype if column.dtype.kind in "fb" else object
+                    )
+                out[name][rows] = column
+        return out
+
+
+def _solve_planar(c: dict[str, np.ndarray], tangential: Any = None) -> Any:
+    return _laws(
+        c,
+        lambda c, law: solve_planar(
+            PlanarBody(*(c[n] for n in PlanarBody.COLUMNS)),
+            c["vx"],
+            c["vy"],
+            c["omega"],
+            mu=c["mu"],
+            kappa=c["kappa"],
+            law=law,
+        ),
+    )
+
+
+def _solve_pendulum(c: dict[str, np.ndarray], tangential: Any = None) -> Any:
+    return _laws(
+        c,
+        lambda c, law: solve_pendulum(
+            Pendulum(*(c[n] for n in Pendulum.COLUMNS)),
+            c["omega"],
+            mu=c["mu"],
+            kappa=c["kappa"],
+            law=law,
+        ),
+    )
+
+
+_LAW = Input("law", None, "restitution law", "poisson", choices=tuple(LAWS))
+_INERTIA = Input("inertia", "kg m^2", "moment of inertia about the centre of mass", rule="mass")
+
+PLANAR = register(
+    Problem(
+        "planar",
+        "a free planar body (rod, block, eccentric disk) touching at an offset r",
+        (
+            Input("mass", "kg", "mass", rule="mass"),
+            _INERTIA,
+            Input("rx", "m", "contact point from the centre of mass, along the surface"),
+            Input("ry", "m", "contact point from the centre of mass, normal (< 0)"),
+            Input("vx", "m/s", "centre velocity along the surface"),
+            Input("vy", "m/s", "centre velocity normal to the surface"),
+            Input("omega", "rad/s", "spin, counter-clockwise positive"),
+            *_surface(),
+            _LAW,
+        ),
+        _solve_planar,
+        PlanarImpact,
+        marks=("rx", "ry"),
+        example={
+            "mass": 1.0,
+            "inertia": 1 / 12,
+            "rx": 0.4,
+            "ry": -0.2,
+            "vx": 1.0,
+            "vy": -1.0,
+            "omega": 0.0,
+        },
+    )
+)
+
+PENDULUM = register(
+    Problem(
+        "pendulum",
+        "a rigid pendulum on a fixed pivot striking the surface",
+        (
+            Input("mass", "kg", "mass", rule="mass"),
+            _INERTIA,
+            Input("gx", "m", "centre of mass from the pivot, along the surface"),
+            Input("gy", "m", "centre of mass from the pivot, normal"),
+            Input("px", "m", "contact point from the pivot, along the surface"),
+            Input("py", "m", "contact point from the pivot, normal (< 0)"),
+            Input("omega", "rad/s", "angular velocity about the pivot"),
+            *_surface(),
+            _LAW,
+        ),
+        _solve_pendulum,
+        PendulumImpact,
+        marks=("gx", "gy", "px", "py"),
+        example={
+            "mass": 1.0,
+            "inertia": 1 / 3,
+            "gx": 0.5,
+            "gy": 0.0,
+            "px": 1.0,
+            "py": -0.1,
+            "omega": -2.0,
+        },
+    )
+)
+
+
+# -- spheres in 3D -----------------------------------------------------------------------------
+def _solve_sphere(c: dict[str, np.ndarray], tangential: Any = None) -> SphereImpact:
+    plane = Surface(
+        normal=_stack(c, "normal_x", "normal_y", "normal_z"),
+        velocity=_stack(c, *(f"surface_velocity_{k}" for k in "xyz")),
+    )
+    return solve_sphere(
+        _one_body(c),
+        _stack(c, "vx", "vy", "vz"),
+        _stack(c, "wx", "wy", "wz"),
+        mu=c["mu"],
+        kappa=c["kappa"],
+        surface=plane,
+        tangential=tangential,
+    )
+
+
+_VELOCITY = tuple(
+    Input(f"v{k}", "m/s", f"centre velocity, {k} component", vector="velocity") for k in "xyz"
+)
+_SPIN = tuple(Input(f"w{k}", "rad/s", f"spin vector, {k} component", vector="spin") for k in "xyz")
+
+SPHERE = register(
+    Problem(
+        "sphere",
+        "a spinning sphere in 3D on a fixed, moving or tilted plane",
+        (
+            *_VELOCITY,
+            *_SPIN,
+            *_surface(),
+            *_body(SPHERE_PRESETS, "solid-sphere"),
+            *_vector(
+                "normal_", "1", "the surface's outward normal", "normal", default=(0.0, 1.0, 0.0)
+            ),
+            *_vector(
+                "surface_velocity_",
+                "m/s",
+                "the surface's velocity",
+                "surface_velocity",
+                default=(0.0, 0.0, 0.0),
+            ),
+        ),
+        _solve_sphere,
+        SphereImpact,
+        marks=("vz", "wx", "wy", "wz"),
+        tangential=True,
+        may_be_nan=("topspin", "gyrospin"),
+        example={"vx": 2.0, "vy": -3.0, "vz": 0.0, "wx": 0.0, "wy": 0.0, "wz": 30.0},
+    )
+)
+
+
+def _solve_pair(c: dict[str, np.ndarray], tangential: Any = None) -> PairImpact:
+    return solve_pair(
+        _one_body(c),
+        _one_body(c, "2"),
+        velocity1=_stack(c, "vx", "vy", "vz"),
+        spin1=_stack(c, "wx", "wy", "wz"),
+        velocity2=_stack(c, "vx2", "vy2", "vz2"),
+        spin2=_stack(c, "wx2", "wy2", "wz2"),
+        normal=_stack(c, "normal_x", "normal_y", "normal_z"),
+        mu=c["mu"],
+        kappa=c["kappa"],
+    )
+
+
+PAIR = register(
+    Problem(
+        "pair",
+        "two spinning spheres colliding in 3D",
+        (
+            *(
+                Input(i.name, i.unit, f"ball 1's {i.description}", vector=f"{i.vector}1")
+                for i in _VELOCITY + _SPIN
+            ),
+            *(
+                Input(f"{i.name}2", i.unit, f"ball 2's {i.description}", vector=f"{i.vector}2")
+                for i in _VELOCITY + _SPIN
+            ),
+            *_vector(
+                "normal_", "1", "the contact normal, from ball 2's centre to ball 1's", "normal"
+            ),
+            *_surface(),
+            *_body(SPHERE_PRESETS, "solid-sphere", who="ball 1's "),
+            *_body(SPHERE_PRESETS, "solid-sphere", "2", who="ball 2's "),
+        ),
+        _solve_pair,
+        PairImpact,
+        marks=tuple(f"{i.name}2" for i in _VELOCITY + _SPIN),
+        may_be_nan=("angle_between_paths",),
+        example={
+            "vx": 1.0,
+            "vy": 0.0,
+            "vz": 0.0,
+            "wx": 0.0,
+            "wy": 20.0,
+            "wz": 0.0,
+            "vx2": 0.0,
+            "vy2": 0.0,
+            "vz2": 0.0,
+            "wx2": 0.0,
+            "wy2": 0.0,
+            "wz2": 0.0,
+            "normal_x": -1.0,
+            "normal_y": 0.0,
+            "normal_z": 0.0,
+        },
+    )
+)
