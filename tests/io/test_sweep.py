@@ -172,7 +172,7 @@ def test_random_points_do_not_depend_on_the_order_of_the_axes():
 
 
 def test_histogram_spec_errors():
-    with pytest.raises(ValueError, match="BINS <= 1000000"):
+    with pytest.raises(ValueError, match="histogram's bins must be an integer <= 1000000"):
         run_sweep(make(), histogram=("after_vx", -1.0, 1.0, 10**9))
     out = subprocess.run(
         [sys.executable, "-m", "spinimpact", "sweep", "--histogram", "after_vx:-1:1:10:extra"],

@@ -18,6 +18,7 @@ from __future__ import annotations
 import contextlib
 import json
 import math
+import numbers
 import os
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
@@ -26,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import require
+from .._validation import require, whole
 from ..core import fused
 from . import _stop
 from ._sinks import ArrowWriter
@@ -283,6 +284,42 @@ def write_npy_metadata(
 DEFAULT_FIELDS = ("after_vx", "after_vy", "after_omega", "regime")
 
 
+#: The most bins a histogram may have.
+MAX_BINS = 10**6
+
+
+def _field_names(fields: Any) -> tuple[str, ...]:
+    """``fields`` as a tuple of names: one name (a string) or a sequence of them."""
+    if isinstance(fields, str):
+        return (fields,)
+    if not isinstance(fields, Sequence) or not all(isinstance(f, str) for f in fields):
+        raise TypeError(f"fields must be a field's name or a sequence of them, got {fields!r}")
+    return tuple(fields)
+
+
+def _check_histogram(sweep: Any, histogram: Any) -> None:
+    """``histogram`` is ``(field, low, high, bins)``: a field of ``sweep``, finite ends
+    ``low < high`` and a whole number of bins in ``[1, MAX_BINS]``; else an error naming
+    the part and its value."""
+    if isinstance(histogram, str) or not isinstance(histogram, Sequence):
+        raise TypeError(f"histogram must be (field, low, high, bins), got {histogram!r}")
+    if len(histogram) != 4:
+        raise ValueError(f"histogram must be (field, low, high, bins), got {histogram!r}")
+    name, lo, hi, bins = histogram
+    if not isinstance(name, str):
+        raise TypeError(f"histogram's field must be a field's name, got {name!r}")
+    sweep.field_name(name, "histogram field")
+    for part, x in (("low", lo), ("high", hi)):
+        if isinstance(x, bool) or not isinstance(x, numbers.Real):
+            raise TypeError(f"histogram's {part} must be a real number, got {x!r}")
+        if not math.isfinite(x):
+            raise ValueError(f"histogram's {part} must be finite, got {x!r}")
+    if not lo < hi:
+        raise ValueError(f"histogram's low must be < high, got {lo!r} and {hi!r}")
+    if whole("histogram's bins", bins, 1) > MAX_BINS:
+        raise ValueError(f"histogram's bins must be an integer <= {MAX_BINS}, got {bins!r}")
+
+
 def plan(
     sweep: Any,
     fields: tuple[str, ...],
@@ -294,15 +331,11 @@ def plan(
     them (a sphere's: it has no ``after_omega``)."""
     if fields is DEFAULT_FIELDS:
         fields = getattr(sweep, "default_fields", fields)
+    fields = _field_names(fields)
     for name in fields:
         sweep.field_name(name)
     if histogram is not None:
-        name, lo, hi, bins = histogram
-        sweep.field_name(name, "histogram field")
-        if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi) or not 1 <= int(bins) <= 10**6:
-            raise ValueError(
-                f"histogram needs LOW < HIGH and 1 <= BINS <= 1000000, got {lo}:{hi}:{bins}"
-            )
+        _check_histogram(sweep, histogram)
     if output is None:
         return None, ()
     return output_kind(output), tuple(dict.fromkeys(sweep.inputs + tuple(fields)))

@@ -178,6 +178,21 @@ class Sweep:
         elif self.samples is not None:
             raise ValueError("samples is for random (uniform) axes only")
         positive_int("chunk_size", self.chunk_size)
+        self._check_size()
+
+    def _check_size(self) -> None:
+        """The points must be numbered by NumPy's index type (``intp``)."""
+        most = int(np.iinfo(np.intp).max)
+        if self.size <= most:
+            return
+        if self.random:
+            raise ValueError(f"samples must be at most {most:,} (the most NumPy can index), "
+                             f"got {self.samples:,}")  # fmt: skip
+        grid = " x ".join(f"{n} {a.num}" for n, a in self.axes.items() if a.kind == "grid")
+        raise ValueError(
+            f"the grid has {self.size:,} points ({grid}), more than {most:,}, the most NumPy can "
+            "index: give its axes fewer points"
+        )
 
     #: The inputs it varies, in the order of the points and of the random draws.
     inputs = INPUTS
