@@ -14,6 +14,9 @@ from spinimpact.viz import planar as viz
 from spinimpact.viz.report import planar_tables
 from spinimpact.viz.tables import number
 
+from tests.viz.layout import ATTACHED, legend_gaps, stacked_markers
+from tests.viz.test_figure_text import _problems
+
 matplotlib = pytest.importorskip("matplotlib")
 
 ROD = PlanarBody.rod(mass=1.0, length=1.0, angle=math.radians(45))
@@ -62,8 +65,8 @@ def test_routh_diagram_draws_path_lines_cone_and_breakpoints(reverse, tmp_path):
     (m0,) = labelled(ax, "end of compression")
     (ms,) = labelled(ax, "slip stops")
     (m1,) = labelled(ax, "$f_1")
-    (flip,) = labelled(ax, "slip reverses")
-    assert m0.get_xdata()[0] == t0 and ms.get_xdata()[0] == ts == flip.get_xdata()[0]
+    assert "and reverses" in ms.get_label()  # one marker where the slip stops and reverses
+    assert m0.get_xdata()[0] == t0 and ms.get_xdata()[0] == ts
     assert d * t0 + b * m0.get_ydata()[0] == pytest.approx(-v0, rel=1e-12)
     assert b * ts + a * ms.get_ydata()[0] == pytest.approx(-u0, abs=1e-12)
     assert m1.get_xdata()[0] == float(reverse.tau1)
@@ -77,7 +80,7 @@ def test_routh_diagram_marks_no_reversal_when_the_contact_sticks():
     imp = solve_planar(ROD, 0.2, -1.0, 0.0, mu=0.8, kappa=0.5, law="newton")
     assert imp.regime.startswith("stick")
     ax = viz.plot_routh_planar(imp).get_axes()[0]
-    assert labelled(ax, "slip reverses") == []
+    assert labelled(ax, "reverses") == []
     assert "rank one" not in labelled(ax, "sticking line")[0].get_label()
 
 
@@ -196,3 +199,82 @@ def test_planar_tables_hold_the_result(reverse):
     assert ("creates energy (E+ > E-)", "no") in tables["coefficients"].rows
     pend = planar_tables(solve_pendulum(PENDULUM, -2.0, mu=0.2, kappa=0.8))
     assert ("px", number(PENDULUM.px, "m")) in pend[0].rows
+
+
+def test_no_marker_hides_another():
+    """Where tau_0, tau_* and tau_1 coincide (a pendulum's slip stops and reverses at the
+    end of compression; kappa = 0 ends the impact there) one marker names them all; the
+    pendulum's diagram once stacked three markers on one point, and the laws figure
+    stacked the three laws' ends where they coincide."""
+    pendulum = solve_pendulum(PENDULUM, -2.0, mu=0.3, kappa=0.8)
+    assert pendulum.tau0 == pendulum.tau_star and pendulum.regime.startswith("reverse")
+    impacts = {
+        "pendulum": pendulum,
+        "reverse": solve_planar(ROD, 1.0, -1.0, 0.0, mu=0.3, kappa=0.8, law="poisson"),
+        "kappa 0": solve_planar(ROD, 0.2, -1.0, 0.0, mu=0.8, kappa=0.0, law="newton"),
+    }
+    for name, imp in impacts.items():
+        ax = viz.plot_routh_planar(imp).get_axes()[0]
+        assert stacked_markers(ax) == [], name
+    (ax,) = viz.plot_routh_planar(pendulum).get_axes()
+    (mark,) = labelled(ax, "end of compression")
+    assert r"$\tau_0 = \tau_*" in mark.get_label() and "slip stops and reverses" in mark.get_label()
+    assert mark.get_xdata()[0] == float(pendulum.tau0)
+    upright = PlanarBody.rod(mass=1.0, length=1.0, angle=math.radians(90))  # W_tn = 0
+    for body, args in (
+        (upright, (1.0, -1.0, 0.0)),
+        (PENDULUM, (None, None, -2.0)),
+        (ROD, (1.0, -1.0, 0.0)),
+    ):
+        fig = viz.plot_laws(body, *args, 0.3, 0.8)
+        for ax in fig.get_axes()[:2]:
+            assert stacked_markers(ax) == [], body.name
+    fig = viz.plot_laws(upright, 1.0, -1.0, 0.0, 0.3, 0.8)
+    (end,) = [ln for ln in fig.get_axes()[0].get_lines() if "tau_1" in ln.get_label()]
+    assert end.get_label().startswith("all three laws")
+
+
+@pytest.mark.parametrize(
+    "body, args",
+    [(ROD, (1.0, -1.0, 0.0)), (PENDULUM, (None, None, -2.0))],
+    ids=["rod", "pendulum"],
+)
+def test_laws_figure_legend_sits_beside_its_panels(body, args):
+    """The legend once floated in a column of its own, 0.7 inch right of the panels."""
+    fig = viz.plot_laws(body, *args, 0.3, 0.8)
+    gaps = legend_gaps(fig)
+    assert len(gaps) == 1 and gaps[0] < ATTACHED, gaps
+    assert _problems(fig) == []
+
+
+def _round_steps(ticks):
+    """The steps between neighbouring ``ticks``, as (mantissa, ok) where ok says the
+    step is 1, 2, 2.5 or 5 times a power of ten and every tick is a multiple of it."""
+    ticks = np.sort(np.asarray(ticks, float))
+    steps = np.diff(ticks)
+    if not np.allclose(steps, steps[0], rtol=1e-9):
+        return False
+    power = 10.0 ** math.floor(math.log10(steps[0]))
+    mantissa = steps[0] / power
+    multiples = ticks / steps[0]
+    return any(math.isclose(mantissa, m, rel_tol=1e-9) for m in (1, 2, 2.5, 5, 10)) and bool(
+        np.allclose(multiples, np.round(multiples), atol=1e-9)
+    )
+
+
+@pytest.mark.parametrize("mu, kappa", [(0.8, 0.9), (0.3, 0.8), (0.5, 0.5), (0.1, 1.0)], ids=str)
+def test_map_colour_bar_ticks_are_round_numbers(mu, kappa):
+    """The energy bar once read 0.0820, 0.0410, -0.2172, -0.4344: ticks at equal fifths
+    of each side. Each side of 0 now has round, evenly spaced ticks inside the bar."""
+    fig = viz.plot_planar_map(rod_factory, mu=mu, kappa=kappa, n=40)
+    (bar,) = [ax for ax in fig.get_axes() if "under Newton" in ax.get_ylabel()]
+    ticks = np.asarray(bar.get_yticks(), float)
+    low, high = bar.get_ylim()
+    shown = ticks[(ticks >= low - 1e-12) & (ticks <= high + 1e-12)]
+    assert 0.0 in shown and len(shown) >= 3
+    below, above = shown[shown <= 0], shown[shown >= 0]
+    for side in (below, above):
+        if len(side) > 1:
+            assert _round_steps(side), shown
+    labels = [t.get_text() for t in bar.get_yticklabels() if t.get_text()]
+    assert all(len(label.replace("\u2212", "-").lstrip("-")) <= 5 for label in labels), labels

@@ -66,6 +66,35 @@ def _dot(ax: Any, x: float, y: float, fmt: str, label: str, **style: Any) -> Non
     ax.plot([x], [y], fmt, label=label, **{"ms": 7, "mec": "k", "mew": 0.6, "zorder": 5, **style})
 
 
+def _same_points(events: list, tol: float) -> list[list]:
+    """``events`` (tuples starting with their ``tau``) grouped where their ``tau`` agree
+    within ``tol``, each group in the given order: one marker for each group."""
+    groups: list[list] = []
+    for event in events:
+        for group in groups:
+            if abs(group[0][0] - event[0]) <= tol:
+                group.append(event)
+                break
+        else:
+            groups.append([event])
+    return groups
+
+
+def _round_ticks(low: float, high: float) -> list[float]:
+    """Round ticks for a bar from ``low < 0`` to ``high > 0`` with 0 in its middle: each
+    half gets its own round step (1, 2, 2.5 or 5 times a power of ten), the ticks
+    inside the bar only."""
+    from matplotlib.ticker import MaxNLocator
+
+    def half(a: float, b: float, bins: int) -> np.ndarray:
+        ticks = MaxNLocator(nbins=bins, steps=[1, 2, 2.5, 5, 10]).tick_values(a, b)
+        return ticks[(ticks >= a) & (ticks <= b)]
+
+    below = half(low, 0.0, 4) if low < 0 else np.zeros(1)
+    above = half(0.0, high, 2) if high > 0 else np.zeros(1)
+    return sorted({float(t) for t in (*below, *above)})
+
+
 def _title(imp: PlanarImpact) -> str:
     return (
         f"{imp.body.name}, $\\mu = {float(imp.mu):g}$, $\\kappa = {float(imp.kappa):g}$, "
@@ -92,8 +121,9 @@ def plot_routh_planar(imp: PlanarImpact, n: int = 401) -> Figure:
         that bring the contact's normal velocity to zero, ``W_tn f + W_nn tau = -v^-``;
         the sticking line, those that bring its slip to zero, ``W_tt f + W_tn tau = -u^-``;
         the path of the impulse, ending at ``(tau_1, f_1)``; markers at ``tau_0``,
-        ``tau_*`` (when finite) and ``tau_1``, and a cross where the slip reverses. The
-        legend sits outside the axes.
+        ``tau_*`` (when finite; a cross where the slip stops and reverses) and ``tau_1``,
+        one marker named for each where they coincide (a pendulum's slip reverses at
+        ``tau_0 = tau_*``). The legend sits outside the axes.
 
     Notes
     -----
@@ -144,13 +174,22 @@ def plot_routh_planar(imp: PlanarImpact, n: int = 401) -> Figure:
         return float(np.interp(tau, h.tau, f))
 
     f1 = float(imp.tangential_impulse)
-    if imp.regime.startswith("reverse"):
-        _dot(ax, ts, at(ts), "X", r"slip reverses at $\tau_*$", color="C3", ms=14, zorder=4)
+    reverses = imp.regime.startswith("reverse")
     ring = {"mfc": "none", "mec": "C0", "ms": 12, "mew": 1.8, "zorder": 6}
-    _dot(ax, t0, at(t0), "s", rf"$\tau_0 = {t0:.4g}$ N s: end of compression", **ring)
+    # (tau, symbol, what happens, marker, style), latest first: one marker per point
+    events = [(t1, r"\tau_1", f"end, $f_1 = {f1:.4g}$ N s", "o", {"color": "k"}),
+              (t0, r"\tau_0", "end of compression", "s", ring)]  # fmt: skip
     if math.isfinite(ts) and ts <= t1:
-        _dot(ax, ts, at(ts), "D", rf"$\tau_* = {ts:.4g}$ N s: slip stops", color="C2")
-    _dot(ax, t1, f1, "o", rf"$\tau_1 = {t1:.4g}$ N s, $f_1 = {f1:.4g}$ N s: end", color="k")
+        what = "slip stops and reverses" if reverses else "slip stops"
+        mark = ("X", {"color": "C3", "ms": 14}) if reverses else ("D", {"color": "C2"})
+        events.insert(1, (ts, r"\tau_*", what, *mark))
+    for group in _same_points(events, 1e-9 * t1):
+        tau = group[0][0]
+        names = " = ".join(e[1] for e in reversed(group))
+        whats = ", ".join(e[2] for e in reversed(group))
+        _, _, _, marker, style = max(group, key=lambda e: e[3] == "X")  # a reversal shows
+        _dot(ax, tau, f1 if tau == t1 else at(tau), marker,
+             rf"${names} = {tau:.4g}$ N s: {whats}", **style)  # fmt: skip
     ax.set_xlabel(r"normal impulse $\tau$ (N s)")
     ax.set_ylabel(r"tangential impulse $f$ (N s)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize="small")
@@ -189,7 +228,8 @@ def plot_laws(
     -------
     matplotlib.figure.Figure
         The contact's normal velocity ``v`` and the kinetic energy ``E`` over ``tau``,
-        each law's end ``tau_1`` marked; below, a table of each law's rebound, its three
+        each law's end ``tau_1`` marked (one marker, named for each, where ends coincide),
+        the legend beside the panels; below, a table of each law's rebound, its three
         restitution coefficients and its energy change.
 
     Notes
@@ -203,8 +243,10 @@ def plot_laws(
     last = max(imps.values(), key=lambda i: float(i.tau1))
     h = last.history(n)
     fig = _figure(figsize=(12, 7.4))
-    grid = fig.add_gridspec(2, 3, height_ratios=[3, 2], width_ratios=[3, 3, 2])
+    grid = fig.add_gridspec(2, 2, height_ratios=[3, 2])
     axes = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
+    # laws whose ends coincide share one marker (the first law's style), named for all
+    ends = _same_points([(float(i.tau1), law) for law, i in imps.items()], 1e-12 * float(last.tau1))
     panels = (
         (h.normal_velocity, "normal_velocity_after", r"contact normal velocity $v$ (m/s)"),
         (h.kinetic_energy, "kinetic_energy_after", r"kinetic energy $E$ (J)"),
@@ -216,18 +258,20 @@ def plot_laws(
         ax.axvline(t0, color="0.55", ls=":", lw=1, label=name, zorder=0)
         if 0 < ts < float(last.tau1) and ts != t0:
             ax.axvline(ts, color="0.55", ls="--", lw=1, zorder=0, label=r"$\tau_*$ (slip stops)")
-        for law, imp in imps.items():
+        for group in ends:
+            law = group[0][1]
             color, marker = _LAW_STYLE[law]
-            end = (float(imp.tau1), float(getattr(imp, field)))
-            _dot(ax, *end, marker, rf"{LAW_NAMES[law]}: $\tau_1$", color=color, ms=9)
+            end = (float(imps[law].tau1), float(getattr(imps[law], field)))
+            names = " = ".join(LAW_NAMES[law] for _, law in group)
+            names = "all three laws" if len(group) == len(LAWS) else names
+            _dot(ax, *end, marker, rf"{names}: $\tau_1$", color=color, ms=9)
         ax.set_xlabel(r"normal impulse $\tau$ (N s)")
         ax.set_ylabel(label)
     axes[0].axhline(0, color="0.8", lw=0.8, zorder=0)
     e0 = float(last.kinetic_energy_before)
     axes[1].axhline(e0, color="0.55", ls="--", lw=1, label=r"$E^-$ (before)", zorder=0)
-    lx = fig.add_subplot(grid[0, 2])
-    lx.axis("off")
-    lx.legend(*axes[1].get_legend_handles_labels(), loc="center left", fontsize="small")
+    axes[1].legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
+                   fontsize="small")  # fmt: skip
     rows = {
         r"$\tau_1$ (N s)": lambda i: i.tau1,
         r"$v_x^+$ (m/s)": lambda i: i.after.vx,
@@ -251,12 +295,11 @@ def plot_laws(
     table.set_fontsize(9)
     table.scale(0.8, 1.35)
     first = next(iter(imps.values()))
-    ends = {round(float(i.tau1) / float(last.tau1), 12) for i in imps.values()}
     fig.suptitle(
         f"Three restitution laws, {first.body.name}, $\\mu = {float(first.mu):g}$, "
         f"$\\kappa = {float(first.kappa):g}$, $u^- = {float(first.slip_before):.4g}$ m/s, "
         f"$v^- = {float(first.normal_velocity_before):.4g}$ m/s"
-        + ("\n(the three laws coincide here: their ends overlap)" if len(ends) == 1 else ""),
+        + ("\n(the three laws coincide here: one end)" if len(ends) == 1 else ""),
         fontsize="medium",
     )
     return fig
@@ -364,8 +407,8 @@ def plot_planar_map(
         norm, cmap2 = Normalize(bottom, 0.0), "Blues_r"
     im = ex.imshow(gain, cmap=cmap2, norm=norm, **style)
     bar = fig.colorbar(im, ax=ex, label=r"$(E^+ - E^-)/E^-$ under Newton's law")
-    if top > 0:  # ticks on both sides of 0, which sits mid-bar
-        bar.set_ticks([*np.linspace(norm.vmin, 0.0, 5), top / 2, top])
+    if top > 0:  # 0 sits mid-bar: round ticks on each side, spaced for its own half
+        bar.set_ticks(_round_ticks(norm.vmin, top))
     created = np.asarray(newton.creates_energy)
     if created.any():
         mask = created.astype(float)
