@@ -5,8 +5,21 @@ repository root on the import path by itself and the shared helpers import as
 ``tests.cases`` and ``tests.reference``; nothing edits ``sys.path``.
 """
 
+import pytest
 from hypothesis import settings
 
 # Deterministic property tests: the same examples on every run and machine.
 settings.register_profile("repro", derandomize=True, max_examples=200, deadline=None)
 settings.load_profile("repro")
+
+
+@pytest.fixture
+def toy():
+    """The toy problem of tests/toy_problem.py, registered for one test, then removed."""
+    from spinimpact import register, unregister
+
+    from .toy_problem import TOY
+
+    register(TOY)
+    yield TOY
+    unregister(TOY.name)

@@ -40,12 +40,21 @@ from .model.planar import (
 )
 from .model.planar_body import Pendulum, PlanarBody
 from .model.presets import BALLS, GROUNDS, Ball, Ground, Wall
+from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
+from .model.registry import Input, Problem, detect, problem, problems, register, unregister
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "Input",
+    "Problem",
+    "detect",
+    "problem",
+    "problems",
+    "register",
+    "unregister",
     "fit",
     "fit_drops",
     "MeasuredBounces",

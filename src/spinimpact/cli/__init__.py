@@ -21,6 +21,7 @@ from .fit import fit_command
 from .flight import flight_command
 from .pictures import figures_command, map_command
 from .planar import planar_command
+from .problems import problems_command
 from .simulate import simulate_command
 from .solve import report_command, solve_command
 from .sphere import pair_command, sphere_command
@@ -52,6 +53,7 @@ for _command in (
     pair_command,
     flight_command,
     fit_command,
+    problems_command,
 ):
     cli.add_command(_command)
 

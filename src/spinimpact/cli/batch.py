@@ -28,6 +28,34 @@ __all__ = ["batch_command"]
 _PAPER_OPTIONS = ("body", "mass", "radius", "gyration")
 
 
+def _problem_option(name: str) -> str:
+    """``--problem``'s value, checked against the registry."""
+    try:
+        return get_problem(name).name
+    except ValueError as exc:
+        raise click.UsageError(f"--problem: {exc}") from None
+
+
+def _settings(items: tuple[str, ...]) -> dict[str, Any]:
+    """``--set INPUT=VALUE`` items as defaults: numbers, a comma list for a vector, or text."""
+    out: dict[str, Any] = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        name = name.strip()
+        if not sep or not name or not text.strip():
+            raise click.UsageError(f"--set takes INPUT=VALUE, got {item!r}")
+        parts = [t.strip() for t in text.split(",")]
+        try:
+            numbers = [float(t) for t in parts]
+        except ValueError:
+            if len(parts) > 1:
+                raise click.UsageError(f"--set {name}: {text!r} is not a list of numbers") from None
+            out[name] = text.strip()
+            continue
+        out[name] = numbers if len(parts) > 1 else numbers[0]
+    return out
+
+
 def _given(ctx: click.Context, name: str) -> bool:
     """Whether the user typed option ``name`` (rather than leaving its default)."""
     source = ctx.get_parameter_source(name)
@@ -74,6 +102,21 @@ def _given(ctx: click.Context, name: str) -> bool:
     show_default=True,
     help="Rows per chunk.",
 )
+@click.option(
+    "--problem",
+    default=None,
+    metavar="NAME",
+    help="The problem the file holds (spinimpact problems lists them); by default its columns say.",
+)
+@click.option(
+    "--set",
+    "settings",
+    multiple=True,
+    metavar="INPUT=VALUE",
+    help="Default of any input of the problem for rows or files that lack it, e.g. "
+    "--set normal=0,0.96,0.28 --set body=spherical-shell (repeatable; a vector by its name "
+    "takes all its components).",
+)
 @click.pass_context
 def batch_command(
     ctx: click.Context,
@@ -82,6 +125,8 @@ def batch_command(
     fields: str | None,
     on_error: str,
     chunk_size: int,
+    problem: str | None,
+    settings: tuple[str, ...],
     **options: Any,
 ) -> None:
     """Solve every row of SOURCE (CSV or Parquet; - reads CSV from standard input); its
@@ -119,9 +164,20 @@ def batch_command(
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
     defaults["law"] = o["law"]
     defaults["tangential"] = tangential_law(o)
+    chosen_problem = None if problem is None else _problem_option(problem)
+    given_settings = _settings(settings)
+    defaults.update(given_settings)
     chosen = None if fields is None else [f for f in fields.split(",") if f.strip()]
 
     def check_kind(kind: str) -> None:
+        declared = get_problem(kind)
+        vectors = declared.vectors()
+        for name in given_settings:
+            if name not in declared.names and name not in vectors:
+                raise click.UsageError(
+                    f"--set {name}: problem {kind!r} has no input {name!r}; its inputs are "
+                    f"{', '.join(declared.names)} (vectors: {', '.join(vectors) or 'none'})"
+                )
         given = [f"--{n}" for n in _PAPER_OPTIONS if _given(ctx, n)]
         what = {"planar": "free planar bodies", "pendulum": "pendulums"}.get(kind)
         law = defaults["tangential"]
@@ -150,6 +206,7 @@ def batch_command(
                 progress=lambda done, total: bar.update(task, completed=done, total=total),
                 fields=chosen,
                 check_kind=check_kind,
+                problem=chosen_problem,
             )
         except FieldError as exc:
             raise click.UsageError(f"--fields: {exc}") from None

@@ -92,6 +92,11 @@ class ProblemBatch:
             have = [p for p in parts if p in header]
             if have and len(have) < len(parts):
                 missing = [p for p in parts if p not in header]
+                if any(self.defaults.get(p) is None for p in parts):
+                    raise BatchError(
+                        f"missing column {missing[0]!r}: columns {', '.join(have)} "
+                        f"give the {vector} in part; it needs {', '.join(parts)}"
+                    )
                 raise BatchError(
                     f"columns {', '.join(have)} give the {vector} in part: add "
                     f"{', '.join(missing)}, or drop them to use the default "
@@ -102,12 +107,26 @@ class ProblemBatch:
         )
         self.numeric = tuple(i.name for i in problem.inputs if not i.text and i.name in header)
         kinds = result_kinds(problem, self.law)
-        self.kinds = {n: kinds[n] for n in problem.outputs(header)}
+        given = [c for c in header if c in problem.names]
+        self.kinds = {n: kinds[n] for n in problem.outputs(given)}
         check_header(header, skip, self.kinds, required)
 
     def _defaults(self, given: dict[str, Any]) -> dict[str, Any]:
         out = {}
         vectors = self.problem.vectors()
+        for vector, parts in vectors.items():
+            value = given.get(vector)
+            if value is not None and (np.ndim(value) != 1 or len(value) != len(parts)):
+                raise ValueError(
+                    f"default {vector} must have {len(parts)} components "
+                    f"({', '.join(parts)}), got {value!r}"
+                )
+            have = [p for p in parts if given.get(p) is not None]
+            if have and len(have) < len(parts):
+                raise ValueError(
+                    f"defaults give the {vector} in part ({', '.join(have)}): "
+                    f"give all of {', '.join(parts)}, or the vector by its name"
+                )
         for each in self.problem.inputs:
             value = given.get(each.name)
             if value is None and each.vector in given and given[each.vector] is not None:
@@ -121,8 +140,6 @@ class ProblemBatch:
 
     def _shown(self, parts: tuple[str, ...]) -> str:
         values = [self.defaults.get(p) for p in parts]
-        if any(v is None for v in values):
-            return "(none: the problem needs them)"
         return "(" + ", ".join(f"{float(v):g}" for v in values) + ")"
 
     def solve(self, chunk: Chunk) -> tuple[dict, dict, np.ndarray]:

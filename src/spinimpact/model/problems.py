@@ -338,6 +338,11 @@ PAIR = register(
         _solve_pair,
         PairImpact,
         marks=tuple(f"{i.name}2" for i in _VELOCITY + _SPIN),
+        echoes={
+            f"before{k}_{i.name}": f"{i.name}{s}"
+            for i in _VELOCITY + _SPIN
+            for k, s in (("1", ""), ("2", "2"))
+        },
         may_be_nan=("angle_between_paths",),
         example={
             "vx": 1.0,

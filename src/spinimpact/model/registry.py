@@ -86,6 +86,13 @@ class Input:
         return self.choices is not None
 
     @property
+    def rule_text(self) -> str:
+        """The input's rules in words (``">= 0, <= 1e6"``; ``"one of a, b"`` for text)."""
+        if self.text:
+            return "one of " + ", ".join(self.choices or ())
+        return ", ".join(text for _, text in RULES.get(self.rule or "", ())) or "finite"
+
+    @property
     def required(self) -> bool:
         """Whether a value must be given (no default, not optional)."""
         return self.default is None and not self.optional
@@ -152,6 +159,10 @@ class Problem:
     may_be_infinite, may_be_nan : tuple of str
         Result columns allowed to be infinite (``tau_star``: a slip that never stops) or
         undefined (an angle without a direction); any other non-finite result is a bad row.
+    echoes : dict
+        Result columns that repeat an input (``before1_vx`` of a pair repeats ``vx``): a
+        batch does not write them again when the file gives the input. ``before_NAME``
+        repeats input ``NAME`` without being declared.
     example : dict
         One valid impact (the inputs without defaults): documentation, and the probe that
         tells each result column's kind (number, text or flag) before a file is read.
@@ -167,6 +178,7 @@ class Problem:
     units: Mapping[str, str] = field(default_factory=dict)
     may_be_infinite: tuple[str, ...] = ("tau_star",)
     may_be_nan: tuple[str, ...] = ()
+    echoes: Mapping[str, str] = field(default_factory=dict)
     example: Mapping[str, Any] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
@@ -224,6 +236,7 @@ class Problem:
         """
         given = set(given)
         skip = given | {f"before_{n}" for n in given}
+        skip |= {column for column, name in self.echoes.items() if name in given}
         names = [n for n in self.result_columns() if n not in skip]
         return tuple(["regime"] * ("regime" in names) + [n for n in names if n != "regime"])
 

@@ -22,7 +22,13 @@ if TYPE_CHECKING:
     from ..model.dynamics import Simulation
     from ..model.planar import PlanarImpact
 
-__all__ = ["print_report", "print_simulation", "planar_tables", "print_planar_report"]
+__all__ = [
+    "print_tables",
+    "print_report",
+    "print_simulation",
+    "planar_tables",
+    "print_planar_report",
+]
 
 _STYLES = {"creates energy": "bold red"}
 
@@ -41,6 +47,17 @@ def _rich(table: Table) -> RichTable:
 
 def _console(console: Console | None) -> Console:
     return console or Console(highlight=False, soft_wrap=True)
+
+
+def print_tables(tables: tuple[Table, ...], console: Console | None = None) -> None:
+    """Print builder tables (:class:`~spinimpact.viz.tables.Table`) with Rich, each with its
+    note under it."""
+    console = _console(console)
+    for table in tables:
+        console.print(_rich(table))
+        if table.note:
+            console.print(Text(table.note))
+        console.print()
 
 
 def print_report(
