@@ -16,7 +16,8 @@ import math
 import os
 import shutil
 import tracemalloc
-from collections.abc import Callable, Iterator
+from collections import deque
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -38,6 +39,7 @@ __all__ = [
     "SweepResult",
     "available_memory",
     "chunks_in_order",
+    "map_in_order",
     "dask_client",
     "estimate",
     "estimate_sweep",
@@ -54,18 +56,28 @@ RESIDENT_FACTOR = 2
 def chunks_in_order(count: int, work: Callable[[int], Any], client: Any, window: int) -> Iterator:
     """Results of ``work(k)`` for each of ``count`` chunks, in order, locally or on a Dask client
     with at most ``window`` chunks in flight (bounded memory)."""
+    for _, result in map_in_order(range(count), work, client, window):
+        yield result
+
+
+def map_in_order(items: Iterable, work: Callable[[Any], Any], client: Any, window: int) -> Iterator:
+    """``(item, work(item))`` for each of ``items``, in their order, locally (each item is
+    taken from ``items`` only when its result is wanted) or on a Dask client with at most
+    ``window`` items in flight (bounded memory: the batch's chunks of a file, the sweep's
+    chunk numbers)."""
     if client is None:
-        for k in range(count):
-            yield work(k)
+        for item in items:
+            yield item, work(item)
         return
-    pending: dict[int, Any] = {}
-    for k in range(count):
-        pending[k] = client.submit(work, k, pure=False)
+    pending: deque[tuple[Any, Any]] = deque()
+    for item in items:
+        pending.append((item, client.submit(work, item, pure=False)))
         if len(pending) >= window:
-            first = min(pending)
-            yield pending.pop(first).result()
-    for k in sorted(pending):
-        yield pending.pop(k).result()
+            first, future = pending.popleft()
+            yield first, future.result()
+    while pending:
+        first, future = pending.popleft()
+        yield first, future.result()
 
 
 def dask_client(address: str, *, timeout: float = 30) -> Any:

@@ -38,6 +38,7 @@ from ..model.registry import problem as get_problem
 from ._arrow_csv import csv_chunks as arrow_csv_chunks
 from ._background import BackgroundRows
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
+from ._runner import map_in_order
 from ._stop import check as stop_check
 from ._tables import (
     SUFFIXES,
@@ -269,6 +270,7 @@ def run_batch(
     fields: Sequence[str] | None = None,
     check_kind: Callable[[str], None] | None = None,
     problem: str | Problem | None = None,
+    client: Any = None,
 ) -> BatchSummary:
     """Solve every row of ``source`` and write ``output`` (CSV, or Parquet by suffix).
 
@@ -316,6 +318,10 @@ def run_batch(
     check_kind : callable, optional
         Called with the file's kind (:func:`body_kind`) once its header is read, before
         anything is written; it may raise to refuse the file.
+    client : distributed.Client, optional
+        Solve the chunks on its Dask cluster (:func:`~spinimpact.io.sweep.dask_client`),
+        at most two per worker thread in flight; the chunks are read and written here, in
+        order, so the output is the same, byte for byte, as without it.
 
     Returns
     -------
@@ -401,9 +407,10 @@ def run_batch(
             sink = CsvRows(target, header, kinds, skip)
         complete = False
         try:
-            for chunk in chunks:
+            window = 2 * max(1, len(client.nthreads())) if client is not None else 1
+            for chunk, solved in map_in_order(chunks, solve_chunk, client, window):
                 stop_check()  # a signal stops the run here, between chunks
-                values, results, messages = solve_chunk(chunk)
+                values, results, messages = solved
                 bad = messages != ""
                 if bad.any() and not skip:
                     raise BatchError(messages[int(np.argmax(bad))])
