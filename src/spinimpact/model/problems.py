@@ -77,11 +77,14 @@ def _vector(prefix: str, unit: str, what: str, vector: str, suffix: str = "", de
 
 
 def _one_body(c: dict[str, np.ndarray], suffix: str = "") -> Body:
-    gyration = c[f"gyration{suffix}"]
-    preset = np.where(np.isnan(gyration), c[f"body{suffix}"], "")
-    return Body.from_columns(
-        mass=c[f"mass{suffix}"], radius=c[f"radius{suffix}"], preset=preset, gyration=gyration
-    )
+    """The rows' body: one preset for all (the common case, without a name per row), or
+    each row's preset or radius of gyration."""
+    gyration, names = c[f"gyration{suffix}"], c[f"body{suffix}"]
+    mass, radius = c[f"mass{suffix}"], c[f"radius{suffix}"]
+    if names.size and np.isnan(gyration).all() and (names == names[0]).all():
+        return Body.preset(str(names[0]), mass=mass, radius=radius)
+    preset = np.where(np.isnan(gyration), names, "")
+    return Body.from_columns(mass=mass, radius=radius, preset=preset, gyration=gyration)
 
 
 def _stack(c: dict[str, np.ndarray], *names: str) -> np.ndarray:

@@ -110,22 +110,22 @@ class Input:
         numpy.ndarray of str (object)
         """
         values = np.asarray(values)
-        out = np.full(values.shape, "", dtype=object)
         if self.text:
-            for i in np.flatnonzero(~np.isin(values, self.choices)):
-                out[i] = f"{self.name} must be one of {', '.join(self.choices)}, got {values[i]!r}"
-            return out
-        values = values.astype(np.float64)
-        rules = [
-            (np.isfinite, "finite"),
-            (lambda a: np.abs(a) <= LARGEST, "at most 1e+50 in magnitude"),
-        ]
-        rules += list(RULES.get(self.rule or "", ()))
-        with np.errstate(invalid="ignore"):
-            for ok, rule in rules:
-                bad = ~np.asarray(ok(values), dtype=bool) & (out == "")
-                for i in np.flatnonzero(bad):
-                    out[i] = f"{self.name} must be {rule}, got {float(values[i])!r}"
+            bad = [(~np.isin(values, self.choices), f"one of {', '.join(self.choices or ())}")]
+        else:
+            values = values.astype(np.float64)
+            rules = [(np.isfinite, "finite"),
+                     (lambda a: np.abs(a) <= LARGEST, "at most 1e+50 in magnitude"),
+                     *RULES.get(self.rule or "", ())]  # fmt: skip
+            with np.errstate(invalid="ignore"):
+                bad = [(~np.asarray(ok(values), dtype=bool), rule) for ok, rule in rules]
+        if not any(b.any() for b, _ in bad):  # the common case: a cheap array of ''
+            return np.zeros(values.shape, dtype="U1")
+        out = np.full(values.shape, "", dtype=object)
+        for mask, rule in bad:
+            for i in np.flatnonzero(mask & (out == "")):
+                got = repr(values[i]) if self.text else repr(float(values[i]))
+                out[i] = f"{self.name} must be {rule}, got {got}"
         return out
 
 
