@@ -1,6 +1,8 @@
 """Impossible or degenerate input on the command line: one line on stderr naming the option
 and the value, exit status 2, no traceback."""
 
+import io
+
 import pytest
 
 from tests.cli.test_errors import assert_one_line
@@ -30,3 +32,49 @@ def test_a_map_of_a_tiny_body_is_drawn(cli, tmp_path):
                            "--dpi", 50)  # fmt: skip
     assert status == 0, err
     assert target.stat().st_size > 0
+
+
+def _parquet(path, **columns):
+    pa = pytest.importorskip("pyarrow")
+    pq = pytest.importorskip("pyarrow.parquet")
+    pq.write_table(pa.table(columns), path)
+    return path
+
+
+INCIDENCE = dict(vx=[1.0, 2.0], vy=[-1.0, -1.0], omega=[0.0, 0.0])
+
+
+def test_a_list_column_cannot_go_to_csv(cli, tmp_path):
+    """A Parquet column of lists passes through to Parquet, but a CSV cell cannot hold a
+    list: the column is named (it was "Unsupported Type: list<element: int64>")."""
+    source = _parquet(tmp_path / "in.parquet", **INCIDENCE, tags=[[1, 2], [3]])
+    status, out, err = cli("batch", source, "--output", tmp_path / "out.csv")
+    assert_one_line(status, out, err, "column 'tags' holds lists (list<element: int64>)")
+    assert ".parquet" in err and not (tmp_path / "out.csv").exists()
+    status, _, err = cli("batch", source, "--output", tmp_path / "out.parquet")
+    assert status == 0, err
+
+
+def test_bytes_that_are_not_text_cannot_go_to_csv(cli, tmp_path):
+    """It was "Invalid UTF8 payload"."""
+    source = _parquet(tmp_path / "in.parquet", **INCIDENCE, note=[b"ok", b"\xff\xfe"])
+    status, out, err = cli("batch", source, "--output", tmp_path / "out.csv")
+    assert_one_line(status, out, err, "column 'note' holds bytes that are not UTF-8 text")
+    assert not (tmp_path / "out.csv").exists()
+    text = _parquet(tmp_path / "text.parquet", **INCIDENCE, note=[b"ok", b"fine"])
+    status, _, err = cli("batch", text, "--output", tmp_path / "out.csv")
+    assert status == 0, err
+
+
+def test_a_huge_csv_field_names_its_row_and_the_limit(cli, tmp_path, monkeypatch):
+    """A field longer than Python's csv module takes (often a quote left open) names the
+    row, its line and the limit (it was "field larger than field limit (131072)")."""
+    text = 'vx,vy,omega,note\n1,-1,0,short\n2,-1,0,"' + "x" * 200_000 + "\n"
+    monkeypatch.setattr("sys.stdin", io.StringIO(text))  # read by the csv module
+    status, out, err = cli("batch", "-", "--output", tmp_path / "out.csv")
+    assert_one_line(status, out, err, "row 2 (line 3)")
+    assert "131,072 characters" in err and "quote" in err
+    header = 'vx,vy,omega,"' + "x" * 200_000 + "\n"
+    monkeypatch.setattr("sys.stdin", io.StringIO(header))
+    status, out, err = cli("batch", "-", "--output", tmp_path / "out.csv")
+    assert_one_line(status, out, err, "the header (line 1): a field longer than")

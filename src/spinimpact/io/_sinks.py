@@ -64,6 +64,13 @@ class ArrowWriter:
             self.writer = pq.ParquetWriter(self.path, schema, use_dictionary=text)
         else:
             pc = require("pyarrow.csv", "fast CSV")
+            for f in schema:  # a CSV cell holds one number or text, not a list or record
+                if self.pa.types.is_nested(f.type):
+                    kind = "lists" if "list" in str(f.type) else "nested values"
+                    raise ValueError(
+                        f"column {f.name!r} holds {kind} ({f.type}), which a CSV file cannot "
+                        "hold: write Parquet (.parquet), or drop the column"
+                    )
             options = pc.WriteOptions(quoting_style="needed")
             self.writer = pc.CSVWriter(self.path, schema, write_options=options)
 
@@ -71,7 +78,28 @@ class ArrowWriter:
         """Append ``table``; the first one fixes the schema if :meth:`open` was not called."""
         if self.writer is None:
             self.open(table.schema)
-        self.writer.write_table(table)
+        try:
+            self.writer.write_table(table)
+        except self.pa.ArrowInvalid as err:
+            if self.fmt != "csv" or "UTF8" not in str(err):
+                raise
+            raise ValueError(self._not_text(table)) from None
+
+    def _not_text(self, table: Any) -> str:
+        """What a CSV file could not take: the first cell of bytes that are not UTF-8."""
+        types = self.pa.types
+        for name, column in zip(table.column_names, table.columns, strict=True):
+            if types.is_binary(column.type) or types.is_large_binary(column.type):
+                for cell in column.to_pylist():
+                    try:
+                        _ = cell is None or cell.decode("utf-8")
+                    except UnicodeDecodeError:
+                        return (
+                            f"column {name!r} holds bytes that are not UTF-8 text, such as "
+                            f"{cell[:20]!r}, which a CSV file cannot hold: write Parquet "
+                            "(.parquet), or drop the column"
+                        )
+        return "a column holds bytes that are not UTF-8 text, which a CSV file cannot hold"
 
     def close(self, schema: Any = None) -> None:
         """Finish the file; with no table written, an empty file with ``schema``."""

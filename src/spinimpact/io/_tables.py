@@ -127,8 +127,8 @@ def csv_chunks(
     with _text_input(path) as f:
         reader = csv.reader(lines(f))
         try:
-            header = [h.strip() for h in next(reader)]
-        except StopIteration:
+            header = [h.strip() for h in _records(reader, "the header (line 1)")[0]]
+        except IndexError:
             raise BatchError(
                 f"{path} is empty: expected a header with columns vx, vy, omega"
             ) from None
@@ -136,7 +136,12 @@ def csv_chunks(
         first = 1
         while True:
             rows, numbers, problems = [], [], []
-            for record in reader:
+            while True:
+                where = f"row {first + len(rows)} (line {reader.line_num + 1})"
+                record = _records(reader, where)
+                if not record:
+                    break
+                record = record[0]
                 if not record or (len(record) == 1 and not record[0].strip()):
                     continue  # blank line
                 where = f"row {first + len(rows)} (line {reader.line_num})"
@@ -160,6 +165,22 @@ def csv_chunks(
             advance(size)
             yield Chunk(first, columns, empty, np.array(numbers), np.array(problems, dtype=object))
             first += len(rows)
+
+
+def _records(reader: Any, where: str) -> list[list[str]]:
+    """``[the next record]`` of the csv ``reader``, ``[]`` at the end; a field longer than
+    the csv module takes is a :class:`BatchError` naming ``where`` it starts."""
+    try:
+        return [next(reader)]
+    except StopIteration:
+        return []
+    except csv.Error as err:
+        if "field limit" not in str(err):
+            raise BatchError(f"{where}: {err}") from None
+        raise BatchError(
+            f"{where}: a field longer than {csv.field_size_limit():,} characters, the most a "
+            'CSV field may hold here: is a quote (") left open?'
+        ) from None
 
 
 @contextlib.contextmanager
