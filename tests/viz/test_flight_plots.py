@@ -7,6 +7,8 @@ import pytest
 from spinimpact.model.flight import flight
 from spinimpact.viz.flight import animate_flight, flight_tables, plot_flight
 
+from tests.viz.test_figure_text import _problems
+
 pytest.importorskip("matplotlib")
 
 SERVE = flight("tennis", "hard", speed=50.0, angle=-6.0, height=2.8, spin_rpm=2000.0,
@@ -87,3 +89,34 @@ def test_the_wall_is_drawn_where_it_stands():
     np.testing.assert_allclose(x * np.cos(d) - z * np.sin(d), 10.0, rtol=1e-12)  # h . p = 10
     bounces, _ = flight_tables(f)
     assert bounces.rows[0][0] == "1w" and bounces.rows[1][0] == "2"
+
+
+def test_the_view_frames_the_flight_and_bounces_not_the_roll_out():
+    """A ball that bounces to a roll and rolls on (here about 36 m of bounces, then to
+    rest 160 m away) once squashed the flight into the first fifth of the picture. The
+    view now ends a little after the last airborne point; the roll-out beyond is clipped
+    and its end said in words."""
+    rolls = flight("tennis", "hard", speed=30.0, angle=0.0, height=1.0)
+    assert rolls.stop == "rest" and float(rolls.final_position.x) > 150.0
+    fig = plot_flight(rolls)
+    side, top = fig.axes[:2]
+    x, y = rolls.path_position[:, 0], rolls.path_position[:, 1]
+    airborne = x[y > float(rolls.ball.radius) * (1 + 1e-9)]
+    last_bounce = float(np.nanmax(rolls.bounces.position.x))
+    low, high = side.get_xlim()
+    assert low <= x[0] and high >= max(airborne.max(), last_bounce)  # every bounce shown
+    assert high < 1.3 * airborne.max()  # ... and not the 160 m roll
+    note = side.get_title(loc="right")
+    assert f"rest at $x$ = {float(rolls.final_position.x):.4g} m" in note
+    assert _problems(fig) == []
+    # the top view's scale is the framed part's
+    shown = (x >= low) & (x <= high)
+    z = rolls.path_position[shown, 2]
+    zlow, zhigh = sorted(top.get_ylim())
+    assert zlow <= z.min() and zhigh >= z.max() and top.yaxis_inverted()
+    assert not [c for c in top.collections if c.get_label() == "at rest"]  # out of view
+    # the whole path on request, and no note where nothing is clipped
+    whole = plot_flight(rolls, roll=True).axes[0]
+    assert whole.get_xlim()[1] >= float(rolls.final_position.x)
+    assert whole.get_title(loc="right") == ""
+    assert plot_flight(SERVE).axes[0].get_title(loc="right") == ""  # nothing clipped

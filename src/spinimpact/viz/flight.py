@@ -76,10 +76,16 @@ def _paths(flight: Flight) -> tuple[np.ndarray, np.ndarray]:
     return t.reshape(n, t.shape[-1]), p.reshape(n, t.shape[-1], 3)
 
 
-def plot_flight(flight: Flight) -> Figure:
+def plot_flight(flight: Flight, *, roll: bool = False) -> Figure:
     """Side view (height ``y`` against ``x``) and top view (``z`` against ``x``) of the
     recorded paths, the bounces marked; for many balls, the first 200 paths and every
-    bounce."""
+    bounce.
+
+    The view frames the flight and the bounces: a ball that ends rolling (often far
+    beyond its last bounce) is shown up to a little after its last airborne point, and
+    where the roll-out goes on beyond the view, the side view's title says where it ends.
+    ``roll=True`` shows the whole path instead.
+    """
     _one(flight)
     from matplotlib.figure import Figure
 
@@ -101,8 +107,9 @@ def plot_flight(flight: Flight) -> Figure:
         np.asarray(flight.final_position.x).ravel(),
         np.asarray(flight.final_position.z).ravel(),
     )
+    clipped = False if roll else _frame(flight, side, top, pts, bz)
     rest = np.asarray(flight.stop).ravel() == "rest"
-    if rest.any():
+    if rest.any() and not clipped:  # else the side view's title says where it rests
         top.scatter(fx[rest], fz[rest], marker="x", s=30, color="k", zorder=3, label="at rest")
     side.axhline(0.0, color="0.4", lw=0.8)
     if flight.wall is not None:  # the wall seen from above: the line h . p = distance
@@ -118,6 +125,44 @@ def plot_flight(flight: Flight) -> Figure:
     what = f"{n} {flight.ball.name} balls" if many else f"{flight.ball.name} ball"
     fig.suptitle(f"{what} on {flight.ground.name}")
     return fig
+
+
+def _frame(flight: Flight, side, top, pts: np.ndarray, bz: np.ndarray) -> bool:
+    """Limit both views to the flight and the bounces (every point where a ball is off
+    the ground, and every bounce, with a margin of 5 %) where the rolling goes beyond
+    them, and say in the side view's title where the roll-out ends. Whether it did."""
+    x, y, z = pts[..., 0], pts[..., 1], pts[..., 2]
+    radius = np.asarray(flight.ball.radius, float).reshape(-1, 1)
+    airborne = y > radius * (1 + 1e-9)  # a rolling ball's centre is at its radius
+    bx = np.asarray(flight.bounces.position.x, float).ravel()
+    xs = np.concatenate([x[airborne], x[:, :1].ravel(), bx])
+    xs = xs[np.isfinite(xs)]
+    if not xs.size:
+        return False
+    margin = 0.05 * max(float(np.ptp(xs)), 1e-3)
+    low, high = float(xs.min()) - margin, float(xs.max()) + margin
+    drawn = np.isfinite(x)
+    beyond = drawn & ((x < low) | (x > high))
+    if not beyond.any():
+        return False
+    side.set_xlim(low, high)
+    inside = drawn & ~beyond
+    zs = np.concatenate([z[inside], bz[np.isfinite(bz)]])
+    pad = max(0.05 * float(np.ptp(zs)), 0.05)
+    top.set_ylim(float(zs.min()) - pad, float(zs.max()) + pad)  # inverted by the caller
+    fx = np.asarray(flight.final_position.x, float).ravel()
+    ft = np.asarray(flight.final_time, float).ravel()
+    arrow = "\u2192" if np.any(x > high) else "\u2190"
+    if fx.size == 1:
+        how = "to rest" if str(np.asarray(flight.stop).ravel()[0]) == "rest" else "on"
+        fz = float(np.asarray(flight.final_position.z, float))
+        where = f"$x$ = {fx[0]:.4g} m" + (f", $z$ = {fz:.3g} m" if abs(fz) >= 0.01 else "")
+        note = f"then rolls {how} at {where} ($t$ = {ft[0]:.3g} s) {arrow}"
+    else:
+        far = fx[np.argmax(np.abs(fx - xs.mean()))]
+        note = f"then roll on, the furthest to $x$ = {far:.4g} m {arrow}"
+    side.set_title(note, loc="right", fontsize=9, color="0.3")
+    return True
 
 
 def _wall_line(ax, wall, zs: np.ndarray) -> None:
@@ -165,7 +210,7 @@ def animate_flight(flight: Flight, target: str | Path, *, format: str | None = N
     frames = max(2, min(600, int(math.ceil(float(times[-1] - times[0]) * fps))))
     clock = np.linspace(times[0], times[-1], frames)
     xs, ys, zs = (np.interp(clock, times, pts[:, i]) for i in range(3))
-    fig = plot_flight(flight)
+    fig = plot_flight(flight, roll=True)  # the ball stays in view to its end
     canvas = FigureCanvasAgg(fig)
     side, top = fig.axes[:2]
     (ball_side,) = side.plot([xs[0]], [ys[0]], "o", color="tab:orange", ms=7, zorder=4)
