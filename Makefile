@@ -32,10 +32,10 @@ bench: $(STAMP)  ## print benchmark ratios (not part of the tests)
 
 images: $(STAMP)  ## regenerate the README's figures in docs/images
 	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80
-	$(VENV)/bin/spinimpact figures --output docs/images --dpi 80
+	$(VENV)/bin/spinimpact figures --output-dir docs/images --dpi 80
 	$(PY) docs/scripts/convergence.py docs/images/convergence.png
 	$(PY) docs/scripts/engines.py docs/images/engines.png
-	$(VENV)/bin/spinimpact planar --body rod --angle-deg 45 --mu 0.3 --kappa 0.8 --plot docs/images/routh_planar.png --dpi 80 > /dev/null
+	$(VENV)/bin/spinimpact planar --body rod --orientation-deg 45 --mu 0.3 --kappa 0.8 --plot docs/images/routh_planar.png --dpi 80 > /dev/null
 	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot docs/images/planar_map.png --resolution 300 --dpi 80 > /dev/null
 	$(PY) docs/scripts/fit_kharaz.py docs/images/fit_kharaz.png
 	$(PY) docs/scripts/flight.py docs/images

@@ -57,7 +57,7 @@ def run(*args):
 def test_fit_prints_the_table_and_writes_json_and_pictures(tmp_path):
     src = bounce_file(tmp_path, sigmas=True)
     out = run("fit", str(src), "--radius", "0.033", "--restitution", "power",
-              "--json", str(tmp_path / "fit.json"), "--plot", str(tmp_path / "fit.png"),
+              "--json-file", str(tmp_path / "fit.json"), "--plot", str(tmp_path / "fit.png"),
               "--corner", str(tmp_path / "corner.png"))  # fmt: skip
     assert out.returncode == 0, out.stderr
     for needle in ("mu", "kappa_ref", "exponent", "profile likelihood", "AIC", "slid throughout"):
@@ -169,7 +169,7 @@ def test_a_fit_that_does_not_converge_is_an_error(tmp_path, capsys, monkeypatch)
 
 def test_a_compliance_model_and_the_goodness_of_fit(tmp_path, capsys):
     src = bounce_file(tmp_path, sigmas=True, missing=False)
-    main(["fit", str(src), "--radius", "0.033", "--model", "walton"])
+    main(["fit", str(src), "--radius", "0.033", "--tangential", "walton"])
     out = capsys.readouterr().out
     assert "walton" in out and "beta0" in out
     assert "reduced chi2" in out and "p = " in out and "does not explain" not in out

@@ -12,7 +12,8 @@ import pytest
 from spinimpact.model.flight import flight
 
 SERVE = ("--ball", "tennis", "--surface", "hard", "--speed", "180", "--speed-unit", "km/h",
-         "--angle", "-6", "--height", "2.8", "--spin-rpm", "2000", "--spin-axis", "topspin",
+         "--elevation-deg", "-6", "--launch-height", "2.8", "--spin-rpm", "2000", "--spin-axis",
+             "topspin",
          "--max-bounces", "3")  # fmt: skip
 
 
@@ -40,7 +41,7 @@ def test_the_bounce_table_and_the_summary_are_printed(cli):
 
 def test_plot_and_animation_are_written_and_nothing_else(cli, tmp_path):
     png, gif = tmp_path / "serve.png", tmp_path / "serve.gif"
-    status, out, _ = cli("flight", "--speed", "8", "--angle", "30", "--max-bounces", "1",
+    status, out, _ = cli("flight", "--speed", "8", "--elevation-deg", "30", "--max-bounces", "1",
                          "--plot", png, "--animate", gif, "--fps", "3", "--dpi", "50")  # fmt: skip
     assert status == 0 and f"wrote {png}" in out and f"wrote {gif}" in out
     assert png.read_bytes()[:4] == b"\x89PNG" and gif.read_bytes()[:3] == b"GIF"
@@ -57,7 +58,7 @@ def test_a_failed_run_keeps_the_old_file(cli, tmp_path):
 
 def test_many_balls_print_the_spread(cli):
     status, out, _ = cli("flight", "--samples", "50", "--speed", "50", "--speed-sd", "2",
-                         "--angle", "-6", "--height", "2.8", "--spin-rpm", "2000",
+                         "--elevation-deg", "-6", "--launch-height", "2.8", "--spin-rpm", "2000",
                          "--max-bounces", "2", "--seed", "3")  # fmt: skip
     assert status == 0 and "50 tennis balls on hard" in out and "bounce 2: x (m)" in out
     rng = np.random.default_rng(3)
@@ -74,7 +75,7 @@ def test_many_balls_print_the_spread(cli):
         (("--speed", "-1"), "speed must be >= 0"),
         (("--spin-rpm", "100", "--spin-axis", "0,0,0"), "length of spin_axis"),
         (("--spin-axis", "wobble"), "--spin-axis must be"),
-        (("--height", "0.01"), "start on or above the ground"),
+        (("--launch-height", "0.01"), "start on or above the ground"),
         (("--ball", "cricket"), "Invalid value for '--ball'"),
         (("--plot", "x.gif"), "--plot must end in"),
         (("--animate", "x.avi"), "--animate must end in .gif or .mp4"),
@@ -85,10 +86,10 @@ def test_many_balls_print_the_spread(cli):
         (("--t-stop", "-1"), "t_stop must be > 0 (s), got -1.0"),
         (("--air-density", "-1"), "air_density must be >= 0 (kg/m^3), got -1.0"),
         (("--samples", "5", "--speed-sd", "-1"), "--speed-sd must be >= 0"),
-        (("--samples", "5", "--angle-sd", "-0.5"), "--angle-sd must be >= 0"),
-        (("--samples", "5", "--direction-sd", "-2"), "--direction-sd must be >= 0"),
-        (("--samples", "5", "--spin-sd", "-300"), "--spin-sd must be >= 0"),
-        (("--samples", "5", "--spin-sd", "nan"), "--spin-sd must be >= 0"),
+        (("--samples", "5", "--elevation-sd-deg", "-0.5"), "--elevation-sd-deg must be >= 0"),
+        (("--samples", "5", "--heading-sd-deg", "-2"), "--heading-sd-deg must be >= 0"),
+        (("--samples", "5", "--spin-sd-rpm", "-300"), "--spin-sd-rpm must be >= 0"),
+        (("--samples", "5", "--spin-sd-rpm", "nan"), "--spin-sd-rpm must be >= 0"),
         (("--speed-sd", "2"), "--speed-sd goes with --samples N"),
     ],
 )  # fmt: skip
@@ -108,7 +109,8 @@ def test_the_command_runs_as_a_program():
 def test_a_compliance_law_from_the_command_line(cli):
     from spinimpact.model.compliance import Walton
 
-    args = ("flight", "--speed", "20", "--angle", "-30", "--height", "1.5", "--spin-rpm", "500",
+    args = ("flight", "--speed", "20", "--elevation-deg", "-30", "--launch-height", "1.5",
+            "--spin-rpm", "500",
             "--max-bounces", "2", "--tangential", "walton", "--beta0", "0.4")  # fmt: skip
     status, out, _ = cli(*args, "--json")
     want = flight("tennis", "hard", speed=20.0, angle=-30.0, height=1.5, spin_rpm=500.0,
@@ -126,8 +128,8 @@ def test_a_wall_from_the_command_line(cli, tmp_path):
     from spinimpact.model.presets import Wall
 
     png = tmp_path / "wall.png"
-    args = ("flight", "--speed", "20", "--angle", "10", "--max-bounces", "3",
-            "--wall-distance", "10", "--wall-direction", "5", "--wall-kappa", "0.6")  # fmt: skip
+    args = ("flight", "--speed", "20", "--elevation-deg", "10", "--max-bounces", "3",
+            "--wall-distance", "10", "--wall-heading-deg", "5", "--wall-kappa", "0.6")  # fmt: skip
     status, out, _ = cli(*args, "--json")
     want = flight("tennis", "hard", speed=20.0, angle=10.0, max_bounces=3,
                   wall=Wall(10.0, 5.0, kappa=0.6))  # fmt: skip

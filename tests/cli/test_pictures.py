@@ -164,7 +164,7 @@ def test_no_rebound_is_both_backward_and_spin_reversed():
 
 def test_figures_of_the_users_own_impact(tmp_path):
     out = run(
-        "figures", "--output", str(tmp_path), "--dpi", "50", "--body", "ring", "--vx", "2",
+        "figures", "--output-dir", str(tmp_path), "--dpi", "50", "--body", "ring", "--vx", "2",
         "--vy", "-3", "--omega", "5", "--mu", "0.3", "--kappa", "0.5", "--mass", "2",
     )  # fmt: skip
     assert out.returncode == 0, out.stderr
@@ -176,12 +176,12 @@ def test_figures_of_the_users_own_impact(tmp_path):
 
     imp = solve(Body.solid_disk(mass=1.0, radius=0.1), 1.0, -1.0, 0.0, mu=0.25, kappa=0.3)
     title = impact_figures(imp)["history"].get_suptitle()
-    out = run("figures", "--output", str(tmp_path / "k"), "--kappa", "0.3", "--dpi", "50")
+    out = run("figures", "--output-dir", str(tmp_path / "k"), "--kappa", "0.3", "--dpi", "50")
     assert out.returncode == 0, out.stderr
     assert len(list((tmp_path / "k").iterdir())) == 3
     assert imp.regime in title
-    bad = run("figures", "--output", str(tmp_path / "bad"), "--vy", "1")
+    bad = run("figures", "--output-dir", str(tmp_path / "bad"), "--vy", "1")
     assert bad.returncode == 2 and "vy must be < 0" in bad.stderr
     assert not (tmp_path / "bad").exists()  # nothing written for a bad case
-    both = run("figures", "--output", str(tmp_path / "b"), "--body", "ring", "--gyration", "1")
+    both = run("figures", "--output-dir", str(tmp_path / "b"), "--body", "ring", "--gyration", "1")
     assert both.returncode == 2 and "either --body or --gyration" in both.stderr

@@ -115,7 +115,8 @@ def test_batch_errors_are_one_line_exit_2(run_main, tmp_path, header, row, needl
 def test_sweep_of_a_rod_prints_the_planar_regimes(run_main, tmp_path):
     args = ["--vx", "-2:2:41", "--vy", "-1", "--omega", "-1:1:11", "--mu", "0.4", "--kappa", "0.6"]
     status, out, err = run_main(
-        "sweep", "--planar", "rod", "--length", 1, "--angle-deg", 45, "--law", "newton", *args,
+        "sweep", "--planar", "rod", "--length", 1, "--orientation-deg", 45, "--law", "newton",
+        *args,
         "--histogram", "dissipated_fraction:0:1:4", "--output", tmp_path / "s",
         "--fields", "after_vx,regime,creates_energy",
     )  # fmt: skip
@@ -160,7 +161,7 @@ def test_sweep_of_a_pendulum_and_of_a_custom_body(run_main):
         (["--planar", "rod", "--body", "ring"], "either --body"),
         (["--planar", "custom", "--rx", "1"], "--planar custom needs --inertia, --rx and --ry"),
         (["--planar", "rod", "--omega", "-50:50:3"], "must approach the surface at every point"),
-        (["--planar", "rod", "--angle-deg", "200"], "--angle-deg 200 is"),
+        (["--planar", "rod", "--orientation-deg", "200"], "--orientation-deg 200 is"),
         (["--planar", "rod", "--fields", "zeta"], "fields must be among after_vx"),
     ],
 )

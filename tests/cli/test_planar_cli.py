@@ -39,24 +39,35 @@ def run_main(capsys):
 
 CASES = {
     "rod": (
-        ["--length", 0.8, "--angle-deg", 60, "--vx", 1.5, "--vy", -2, "--omega", 3],
+        ["--length", 0.8, "--orientation-deg", 60, "--vx", 1.5, "--vy", -2, "--omega", 3],
         lambda: PlanarBody.rod(mass=2.0, length=0.8, angle=math.radians(60)),
         (1.5, -2.0, 3.0),
     ),
     "block": (
-        ["--width", 0.3, "--height", 0.1, "--angle", 0.4, "--vx", -0.5, "--vy", -1],
-        lambda: PlanarBody.block(mass=2.0, width=0.3, height=0.1, angle=0.4),
+        ["--width", 0.3, "--height", 0.1, "--orientation-deg", 23, "--vx", -0.5, "--vy", -1],
+        lambda: PlanarBody.block(mass=2.0, width=0.3, height=0.1, angle=math.radians(23)),
         (-0.5, -1.0, 0.0),
     ),
     "eccentric-disk": (
-        ["--radius", 0.1, "--gyration", 0.06, "--offset", 0.03, "--angle-deg", 30, "--omega", -20],
+        [
+            "--radius",
+            0.1,
+            "--gyration",
+            0.06,
+            "--offset",
+            0.03,
+            "--orientation-deg",
+            30,
+            "--omega",
+            -20,
+        ],
         lambda: PlanarBody.eccentric_disk(
             mass=2.0, radius=0.1, gyration=0.06, offset=0.03, angle=math.radians(30)
         ),
         (1.0, -1.0, -20.0),
     ),
     "pendulum": (
-        ["--length", 1.2, "--angle-deg", 70, "--omega", -3],
+        ["--length", 1.2, "--orientation-deg", 70, "--omega", -3],
         lambda: Pendulum.rod(mass=2.0, length=1.2, angle=math.radians(70)),
         (None, None, -3.0),
     ),
@@ -85,7 +96,7 @@ def test_json_equals_the_python_api(body):
 def test_report_and_both_figures(tmp_path):
     routh, laws = tmp_path / "routh.png", tmp_path / "laws.svg"
     routh.write_bytes(b"previous")
-    out = run("--angle-deg", 45, "--plot", routh, "--laws-plot", laws, "--dpi", 50)
+    out = run("--orientation-deg", 45, "--plot", routh, "--laws-plot", laws, "--dpi", 50)
     assert out.returncode == 0, out.stderr
     imp = solve_planar(
         PlanarBody.rod(mass=1.0, length=1.0, angle=math.pi / 4), 1.0, -1.0, 0.0, mu=0.3, kappa=0.8
@@ -111,7 +122,16 @@ def test_report_and_both_figures(tmp_path):
 def test_map_plot_spans_the_angles_of_the_body(run_main, tmp_path):
     target = tmp_path / "map.png"
     status, out, err = run_main(
-        "--body", "block", "--angle-deg", 10, "--map-plot", target, "--resolution", 8, "--dpi", 50
+        "--body",
+        "block",
+        "--orientation-deg",
+        10,
+        "--map-plot",
+        target,
+        "--resolution",
+        8,
+        "--dpi",
+        50,
     )
     assert status == 0, err
     assert out.splitlines()[-1] == f"wrote {target}"
@@ -128,9 +148,11 @@ def test_energy_creation_is_flagged(run_main):
     ("args", "needle"),
     [
         (["--body", "rod", "--width", 1], "--width does not apply to --body rod"),
-        (["--angle", 1, "--angle-deg", 45], "not both"),
-        (["--angle-deg", 190], "--angle-deg 190 is 3.31613 rad: angle must be in (0, pi) rad"),
-        (["--body", "block", "--angle-deg", 90], "angle must be in [0, pi/2) rad"),
+        (
+            ["--orientation-deg", 190],
+            "--orientation-deg 190 is 3.31613 rad: angle must be in (0, pi) rad",
+        ),
+        (["--body", "block", "--orientation-deg", 90], "angle must be in [0, pi/2) rad"),
         (["--body", "pendulum", "--vx", 1], "--vx does not apply to --body pendulum"),
         (["--body", "pendulum", "--omega", 2], "contact point must approach"),
         (["--vy", 1], "contact point must approach"),
@@ -162,9 +184,9 @@ def test_help_names_the_units(run_main):
     status, out, _ = run_main("--help")
     assert status == 0
     for needle in (
-        "--angle-deg",
+        "--orientation-deg",
         "degrees",
-        "radians",
+        "conventions.md",
         "rod|block|eccentric-disk|pendulum",
         "--laws-plot",
         "newton|poisson|energetic",
@@ -175,7 +197,7 @@ def test_help_names_the_units(run_main):
 def test_html_page_is_written_atomically(tmp_path):
     page = tmp_path / "rod.html"
     page.write_text("previous")
-    out = run("--length", 0.8, "--angle-deg", 60, "--law", "newton", "--html", page)
+    out = run("--length", 0.8, "--orientation-deg", 60, "--law", "newton", "--html", page)
     assert out.returncode == 0, out.stderr
     assert out.stdout.splitlines()[-1] == f"wrote {page}"
     imp = solve_planar(

@@ -39,13 +39,13 @@ def test_default_compares_with_solves_default():
 
 
 def test_calibrated_hertz_stays_hertz_and_says_so():
-    """The issue: --contact hertz --target-kappa 0.8 silently ran a HuntCrossleyContact."""
-    out = _run("--contact", "hertz", "--target-kappa", "0.8")
+    """--contact hertz with --kappa 0.8 once ran a HuntCrossleyContact silently."""
+    out = _run("--contact", "hertz", "--kappa", "0.8")
     assert out.returncode == 0, out.stderr
     assert "HertzContact(youngs_modulus=2e+09, poisson_ratio=0.35, radius=0.1, alpha=" in out.stdout
     assert "HuntCrossleyContact" not in out.stdout
     assert "hertz contact law, its Hunt-Crossley damping alpha calibrated to give kappa = 0.8 " \
-        "at |vy| = 4 m/s (--target-kappa)" in out.stdout  # fmt: skip
+        "at |vy| = 4 m/s (--kappa)" in out.stdout  # fmt: skip
     elastic = _run("--kappa", "1")
     assert elastic.returncode == 0, elastic.stderr
     assert "elastic: no damping for kappa = 1" in elastic.stdout and "alpha=0)" in elastic.stdout
@@ -55,10 +55,8 @@ def test_calibrated_hertz_stays_hertz_and_says_so():
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--target-kappa", "1.2"], "--target-kappa must be in (0, 1], got 1.2"),
         (["--kappa", "1.2"], "--kappa must be in (0, 1], got 1.2"),
         (["--contact", "linear", "--kappa", "0"], "--kappa must be in (0, 1], got 0.0"),
-        (["--kappa", "0.5", "--target-kappa", "0.5"], "give either --kappa or --target-kappa"),
         (["--alpha", "0.1", "--kappa", "0.5"], "give either --alpha or --kappa, not both"),
         (["--plot", "sim.txt"], "--plot must end in .png, .svg or .pdf, got 'sim.txt'"),
     ],
@@ -78,9 +76,10 @@ def test_bad_options_are_named_as_typed_before_any_output(args, message, tmp_pat
 def test_help_gives_the_law_defaults():
     out = _run("--help")
     text = " ".join(out.stdout.split())
-    assert "k: N/m (linear; default 1e6) or N/m^n (hunt- crossley; default 1e8)" in text
-    assert "E, Pa (hertz; default 2e9)" in text and "nu (hertz; default 0.35)" in text
-    assert "--kappa FLOAT Restitution in (0, 1]" in text and "Default 0.8, as solve" in text
+    assert "N/m for linear (default 1e6)" in text and "(default 1e8)" in text
+    assert "Young's modulus E, Pa. Hertz; default 2e9." in text
+    assert "Hertz; default 0.35." in text
+    assert "Here in (0, 1]" in text and "Default 0.8, as solve" in text
 
 
 def test_damping_given_means_no_calibration():

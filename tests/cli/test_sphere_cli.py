@@ -97,26 +97,29 @@ def assert_same(got, imp):
 c30, s30 = math.cos(math.radians(30)), math.sin(math.radians(30))
 PERSON = {
     "along +x, topspin": (
-        ["--speed", 10, "--angle-deg", 30, "--rpm", 3000, "--axis", "topspin"],
+        ["--speed", 10, "--incidence-from-surface-deg", 30, "--spin-rpm", 3000, "--spin-axis",
+         "topspin"],
         (10 * c30, -10 * s30, 0), (0, 0, -3000 * RPM), None,
     ),
     "heading 90 (-z), backspin": (
-        ["--speed", 10, "--angle-deg", 30, "--direction-deg", 90, "--rpm", 1200,
-         "--axis", "backspin"],
+        ["--speed", 10, "--incidence-from-surface-deg", 30, "--heading-deg", 90, "--spin-rpm", 1200,
+         "--spin-axis", "backspin"],
         (0, -10 * s30, -10 * c30), (1200 * RPM, 0, 0), None,
     ),
     "heading 180 (-x), side spin": (
-        ["--speed", 4, "--angle-deg", 60, "--direction-deg", 180, "--rpm", -500,
-         "--axis", "sidespin"],
+        ["--speed", 4, "--incidence-from-surface-deg", 60, "--heading-deg", 180, "--spin-rpm", -500,
+         "--spin-axis", "sidespin"],
         (-4 * s30, -4 * c30, 0), (0, -500 * RPM, 0), None,
     ),
     "an axis x,y,z": (
-        ["--speed", 5, "--angle-deg", 90, "--rpm", 600, "--axis", "3,0,4"],
+        ["--speed", 5, "--incidence-from-surface-deg", 90, "--spin-rpm", 600, "--spin-axis",
+         "3,0,4"],
         (0, -5, 0), (600 * RPM * 0.6, 0, 600 * RPM * 0.8), None,
     ),
     "a tilted, moving surface": (  # normal tilted 30 deg about z: t1 = (c, s, 0), t2 = -z
         ["--normal", f"{-s30!r},{c30!r},0", "--surface-velocity", "1,2,0", "--speed", 6,
-         "--angle-deg", 45, "--direction-deg", 90, "--rpm", 100, "--axis", "topspin"],
+         "--incidence-from-surface-deg", 45, "--heading-deg", 90, "--spin-rpm", 100,
+             "--spin-axis", "topspin"],
         (1 + 6 * math.sqrt(0.5) * s30, 2 - 6 * math.sqrt(0.5) * c30, -6 * math.sqrt(0.5)),
         # n x e = (-s, c, 0) x (0, 0, -1) = (-c, -s, 0)
         (-100 * RPM * c30, -100 * RPM * s30, 0), ((-s30, c30, 0), (1, 2, 0)),
@@ -140,15 +143,17 @@ def test_person_inputs_equal_the_vectors_they_describe(cli, case):
 def test_topspin_input_leaves_with_topspin_and_a_ball_rolling_forward_grips(cli):
     # rolling forward at 2 m/s with R = 0.1: 20 rad/s of topspin; a vertical drop changes
     # nothing along the surface, so it leaves rolling, with the same topspin
-    got = as_json(cli, "sphere", "--velocity", "2,-1,0", "--rpm", 20 / RPM, "--axis", "topspin")
+    got = as_json(
+        cli, "sphere", "--velocity", "2,-1,0", "--spin-rpm", 20 / RPM, "--spin-axis", "topspin"
+    )
     assert got["before"]["wz"] == pytest.approx(-20.0, rel=1e-12)
     assert got["grips"] is True  # (rpm to rad/s rounds: the slip is ~1e-16, not 0)
     assert got["topspin"] == pytest.approx(20.0, rel=1e-12)
 
 
 def test_pair_person_inputs(cli):
-    got = as_json(cli, "pair", "--speed1", 2, "--direction1-deg", 90, "--rpm1", 600,
-                  "--axis1", "backspin", "--normal", "0,0,1")  # fmt: skip
+    got = as_json(cli, "pair", "--speed1", 2, "--heading1-deg", 90, "--spin1-rpm", 600,
+                  "--spin1-axis", "backspin", "--normal", "0,0,1")  # fmt: skip
     v1, w1 = (0, 0, -2), (600 * RPM, 0, 0)  # along -z; backspin turns about +x
     imp = solve_pair(BALL, BALL, velocity1=v1, spin1=w1, velocity2=[0, 0, 0], spin2=[0, 0, 0],
                      normal=[0, 0, 1], mu=0.2, kappa=0.8)  # fmt: skip
@@ -200,16 +205,21 @@ BAD = [
     (["sphere", "--velocity", "a,b,c"], "three finite numbers"),
     (["sphere", "--spin", "1,nan,0"], "three finite numbers"),
     (["sphere", "--velocity", "1,-1,0", "--speed", 3], "either --velocity or --speed"),
-    (["sphere", "--speed", 3], "--speed needs --angle-deg"),
-    (["sphere", "--angle-deg", 30], "--angle-deg needs --speed"),
-    (["sphere", "--speed", 3, "--angle-deg", 120], "--angle-deg must be in [0, 90]"),
-    (["sphere", "--speed", 3, "--angle-deg", 0], "must approach"),
-    (["sphere", "--speed", -3, "--angle-deg", 10], "--speed must be a finite number > 0"),
-    (["sphere", "--rpm", 100], "--rpm and --axis go together"),
-    (["sphere", "--rpm", 100, "--axis", "wobble"], "topspin, backspin, sidespin or a direction"),
-    (["sphere", "--rpm", 100, "--axis", "0,0,0"], "--axis must be a direction"),
-    (["sphere", "--spin", "0,0,1", "--rpm", 100, "--axis", "x"], "either --spin or --rpm"),
-    (["sphere", "--velocity", "0,-3,0", "--rpm", 1, "--axis", "topspin"], "needs a direction"),
+    (["sphere", "--speed", 3], "--speed needs --incidence-from-surface-deg"),
+    (["sphere", "--incidence-from-surface-deg", 30], "--incidence-from-surface-deg needs --speed"),
+    (["sphere", "--speed", 3, "--incidence-from-surface-deg", 120],
+     "--incidence-from-surface-deg must be in [0, 90]"),
+    (["sphere", "--speed", 3, "--incidence-from-surface-deg", 0], "must approach"),
+    (["sphere", "--speed", -3, "--incidence-from-surface-deg", 10],
+     "--speed must be a finite number > 0"),
+    (["sphere", "--spin-rpm", 100], "--spin-rpm and --spin-axis go together"),
+    (["sphere", "--spin-rpm", 100, "--spin-axis", "wobble"],
+     "topspin, backspin, sidespin, a combination"),
+    (["sphere", "--spin-rpm", 100, "--spin-axis", "0,0,0"], "--spin-axis must be a direction"),
+    (["sphere", "--spin", "0,0,1", "--spin-rpm", 100, "--spin-axis", "x"],
+     "either --spin or --spin-rpm"),
+    (["sphere", "--velocity", "0,-3,0", "--spin-rpm", 1, "--spin-axis", "topspin"],
+     "needs a direction"),
     (["sphere", "--normal", "0,0,0"], "normal"),
     (["sphere", "--velocity", "1,1,0"], "must approach"),
     (["sphere", "--body", "spherical-shell", "--gyration", 0.05], "not both"),
@@ -231,7 +241,7 @@ BAD = [
     (["pair", "--centre1", "0,0,0", "--centre2", "0.1,0,0"], "overlap"),
     (["pair", "--normal", "1,0,0"], "must approach"),
     (["pair", "--speed1", 2, "--velocity1", "1,0,0"], "either --velocity1 or --speed1"),
-    (["pair", "--rpm2", 100, "--axis2", "topspin"], "needs a direction of travel"),
+    (["pair", "--spin2-rpm", 100, "--spin2-axis", "topspin"], "needs a direction of travel"),
 ]  # fmt: skip
 
 
@@ -272,4 +282,4 @@ def test_batch_through_the_command_line(cli, tmp_path):
     assert status == 0, err
     assert "1 rows (pairs of spheres)" in out
     status, _, err = cli("sphere", "--batch", pairs, "--output", target)
-    assert status == 2 and "spinimpact pair --batch" in err
+    assert status == 2 and "describe problem 'pair'" in err

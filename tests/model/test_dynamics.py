@@ -210,7 +210,7 @@ def test_simulate_command(tmp_path):
             "0.1",
             "--contact",
             "hunt-crossley",
-            "--target-kappa",
+            "--kappa",
             "0.7",
             "--plot",
             str(plot),

@@ -110,7 +110,16 @@ def test_unknown_paper_figure():
 
 def test_figures_command_writes_every_figure(tmp_path):
     out = subprocess.run(
-        [sys.executable, "-m", "spinimpact", "figures", "--output", str(tmp_path), "--dpi", "50"],
+        [
+            sys.executable,
+            "-m",
+            "spinimpact",
+            "figures",
+            "--output-dir",
+            str(tmp_path),
+            "--dpi",
+            "50",
+        ],
         capture_output=True,
         text=True,
         timeout=120,
@@ -132,7 +141,7 @@ def test_figures_command_svg_and_bad_output(tmp_path):
             "-m",
             "spinimpact",
             "figures",
-            "--output",
+            "--output-dir",
             str(tmp_path),
             "--format",
             "svg",
@@ -146,7 +155,7 @@ def test_figures_command_svg_and_bad_output(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("x")
     out = subprocess.run(
-        [sys.executable, "-m", "spinimpact", "figures", "--output", str(blocker)],
+        [sys.executable, "-m", "spinimpact", "figures", "--output-dir", str(blocker)],
         capture_output=True,
         text=True,
         timeout=120,

@@ -20,9 +20,11 @@ import click
 
 from ..model.body import PRESETS, Body
 from ..model.impact import Impact, solve
+from ._vocabulary import help as _help
 
 __all__ = [
     "DEFAULTS",
+    "SPEED_UNITS",
     "body_options",
     "surface_options",
     "incidence_options",
@@ -51,6 +53,9 @@ DEFAULTS: dict[str, Any] = {
     "mu": 0.2,
     "kappa": 0.8,
 }
+
+#: m/s in one unit of each ``--speed-unit``.
+SPEED_UNITS: dict[str, float] = {"m/s": 1.0, "km/h": 1.0 / 3.6, "mph": 0.44704}
 
 
 def jsonable(value: Any) -> Any:
@@ -138,7 +143,7 @@ def _options(*decorators: Callable) -> Callable:
     return wrap
 
 
-def float_option(name: str, help: str) -> Callable:
+def float_option(name: str, help: str = "") -> Callable:
     """A float option ``--NAME`` whose default is the documented default case's.
 
     Parameters
@@ -146,10 +151,11 @@ def float_option(name: str, help: str) -> Callable:
     name : str
         Key of :data:`DEFAULTS` and name of the option.
     help : str
-        Help text, with the unit.
+        What the command adds to the option's meaning and unit
+        (:mod:`~spinimpact.cli._vocabulary`).
     """
     return click.option(
-        f"--{name}", type=float, default=DEFAULTS[name], show_default=True, help=help
+        f"--{name}", type=float, default=DEFAULTS[name], show_default=True, help=_help(name, help)
     )
 
 
@@ -158,26 +164,19 @@ body_options = _options(
         "--body",
         type=click.Choice(list(PRESETS)),
         default=None,
-        help=f"Body preset (default {DEFAULTS['body']}).",
+        help=_help("body", f"Default {DEFAULTS['body']}."),
     ),
-    float_option("mass", "Mass m, kg."),
-    float_option("radius", "Contact radius R, m."),
+    float_option("mass"),
+    float_option("radius"),
     click.option(
         "--gyration",
         type=float,
         default=None,
-        help="Radius of gyration rho, m: a custom body instead of a preset (rho > R for a spool).",
+        help=_help("gyration", "A custom body instead of a preset (rho > R for a spool)."),
     ),
 )
-surface_options = _options(
-    float_option("mu", "Friction >= 0."),
-    float_option("kappa", "Restitution in [0, 1]."),
-)
-incidence_options = _options(
-    float_option("vx", "Incidence vx, m/s."),
-    float_option("vy", "Incidence vy < 0, m/s."),
-    float_option("omega", "Incidence spin, rad/s, counter-clockwise positive."),
-)
+surface_options = _options(float_option("mu"), float_option("kappa"))
+incidence_options = _options(float_option("vx"), float_option("vy"), float_option("omega"))
 
 
 def progress() -> Any:

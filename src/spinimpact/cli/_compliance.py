@@ -48,15 +48,15 @@ def tangential_options(function: Callable) -> Callable:
             "--poisson-ratio",
             type=float,
             default=None,
-            help="Stronge, mindlin-deresiewicz: Poisson's ratio in (-1, 0.5]; "
+            help="Poisson's ratio nu in (-1, 0.5]. Stronge, mindlin-deresiewicz: "
             "k_t/k_n = 2(1-nu)/(2-nu) (Mindlin).",
         ),
         click.option(
             "--stiffness-ratio",
             type=float,
             default=None,
-            help="Stronge, mindlin-deresiewicz: tangential over normal contact stiffness "
-            "k_t/k_n > 0.",
+            help="Tangential over normal contact stiffness k_t/k_n > 0. Stronge, "
+            "mindlin-deresiewicz.",
         ),
     ]
     for option in reversed(options):

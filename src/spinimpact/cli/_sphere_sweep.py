@@ -14,6 +14,7 @@ from typing import Any
 import click
 
 from ._common import _options
+from ._vocabulary import help as _help
 from .sphere import SPHERES, VECTOR
 
 __all__ = ["SPHERE_ONLY", "sphere_options", "sphere_sweep"]
@@ -31,8 +32,10 @@ def _given(ctx: click.Context, name: str) -> bool:
     return source not in (None, click.core.ParameterSource.DEFAULT)
 
 
-def _axis(name: str, unit: str) -> Any:
-    return click.option(f"--{name}", default=None, help=f"--sphere: as --vx, {unit} (default 0).")
+def _axis(name: str) -> Any:
+    return click.option(
+        f"--{name}", default=None, help=_help(name, "--sphere: as --vx (default 0).")
+    )
 
 
 sphere_options = _options(
@@ -40,15 +43,15 @@ sphere_options = _options(
         "--sphere",
         type=click.Choice(list(SPHERES)),
         default=None,
-        help="Sweep a sphere in 3D instead (axes --vx --vy --vz --wx --wy --wz --mu --kappa): "
-        "--mass, --radius; --gyration for any other sphere (a thick shell).",
+        help=_help("sphere", "Axes --vx --vy --vz --wx --wy --wz --mu --kappa; --mass, "
+        "--radius; --gyration for any other sphere (a thick shell)."),
     ),
-    _axis("vz", "m/s"),
-    *(_axis(n, "rad/s") for n in ("wx", "wy", "wz")),
+    _axis("vz"),
+    *(_axis(n) for n in ("wx", "wy", "wz")),
     click.option("--normal", type=VECTOR, default=None,
-                 help="--sphere: the surface's outward normal x,y,z (default 0,1,0)."),
+                 help=_help("normal", "--sphere (default 0,1,0).")),
     click.option("--surface-velocity", type=VECTOR, default=None,
-                 help="--sphere: the surface's velocity x,y,z, m/s (default at rest)."),
+                 help=_help("surface-velocity", "--sphere (default at rest).")),
 )  # fmt: skip
 
 

@@ -17,6 +17,8 @@ import numpy as np
 from ..model.body import PRESETS, Body
 from ..model.fit_models import TANGENTIAL
 from ._common import image_format, jsonable
+from ._vocabulary import deprecated
+from ._vocabulary import help as _help
 
 __all__ = ["fit_command", "read_columns", "read_table", "DROP_COLUMNS"]
 
@@ -201,32 +203,33 @@ def _print(res: Any) -> None:
 
 @click.command("fit")
 @click.argument("bounces", type=click.Path(dir_okay=False))
-@click.option("--model", type=click.Choice(TANGENTIAL), default="rigid", show_default=True,
-              help="Tangential model.")  # fmt: skip
+@click.option("--tangential", "model", type=click.Choice(TANGENTIAL), default="rigid",
+              show_default=True, help=_help("tangential", "The model fitted."))  # fmt: skip
+@deprecated("--model", "--tangential", "model", type=click.Choice(TANGENTIAL))
 @click.option("--restitution", default="constant", show_default=True,
-              help="kappa: constant, power (kappa_ref (|vy|/v_ref)^exponent), or knot "
-                   "speeds in m/s (e.g. 1,2,4) between which kappa is interpolated.")  # fmt: skip
+              help=_help("restitution", "kappa: constant, power (kappa_ref "
+                   "(|vy|/v_ref)^exponent), or knot speeds in m/s (e.g. 1,2,4) between which "
+                   "kappa is interpolated."))  # fmt: skip
 @click.option("--fix", multiple=True, metavar="NAME=VALUE",
-              help="Hold a parameter at a value, e.g. --fix kappa=0.98 (repeatable).")  # fmt: skip
-@click.option("--free-gyration", is_flag=True, help="Fit the radius of gyration too.")
+              help=_help("fix", "E.g. --fix kappa=0.98 (repeatable)."))  # fmt: skip
+@click.option("--free-gyration", is_flag=True, help=_help("free-gyration"))
 @click.option("--body", type=click.Choice(list(PRESETS)), default=None,
-              help="Body preset (default solid-sphere).")  # fmt: skip
+              help=_help("body", "With --radius, which may be left out when no spin "
+                               "is given or measured."))  # fmt: skip
 @click.option("--radius", type=float, default=None,
-              help="Contact radius R, m (needed whenever spin is measured or given).")  # fmt: skip
-@click.option(
-    "--gyration", type=float, default=None, help="Radius of gyration rho, m (custom body)."
-)
+              help=_help("radius", "Needed whenever spin is measured or given."))  # fmt: skip
+@click.option("--gyration", type=float, default=None, help=_help("gyration", "A custom body."))
 @click.option("--confidence", type=float, default=0.95, show_default=True,
-              help="Level of the intervals.")  # fmt: skip
+              help=_help("confidence"))  # fmt: skip
 @click.option("--drops", is_flag=True,
-              help="The file holds drop tests: drop_height,rebound_height (m) or "
-                   "impact_speed,rebound_speed (m/s), optional sigma_<column>.")  # fmt: skip
-@click.option(
-    "--plot", default=None, help="Measured against fitted and residuals (.png/.svg/.pdf)."
-)
-@click.option("--corner", default=None, help="Corner plot of the parameters (.png/.svg/.pdf).")
-@click.option("--json", "json_path", default=None, help="Write every result field as JSON here.")
-@click.option("--dpi", type=click.IntRange(20, 1200), default=100, show_default=True)
+              help=_help("drops", "drop_height,rebound_height (m) or "
+                   "impact_speed,rebound_speed (m/s), optional sigma_<column>."))  # fmt: skip
+@click.option("--plot", default=None, help=_help("plot", "Measured against fitted, and residuals."))
+@click.option("--corner", default=None, help=_help("corner"))
+@click.option("--json-file", "json_path", default=None, help=_help("json-file"))
+@deprecated("--json", "--json-file", "json_path")
+@click.option("--dpi", type=click.IntRange(20, 1200), default=100, show_default=True,
+              help=_help("dpi"))  # fmt: skip
 def fit_command(bounces: str, **o: Any) -> None:
     """Fit friction and restitution to measured bounces in a CSV file.
 

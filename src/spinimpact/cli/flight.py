@@ -4,7 +4,7 @@ One ball: the bounce table and the summary (Rich), or ``--json``; ``--plot`` (si
 views, bounces marked) and ``--animate`` (``.gif``; ``.mp4`` where ffmpeg is installed), each
 written atomically. ``--samples N`` flies N balls with normally scattered speed, angles and
 spin (``--speed-sd`` ...; seeded), with a progress bar, and prints the spread of the first
-two bounces.
+two bounces. The names, units and signs of every option: ``docs/conventions.md``.
 """
 
 from __future__ import annotations
@@ -19,18 +19,26 @@ import numpy as np
 
 from ..model.flight import AIR_DENSITY, flight
 from ..model.presets import BALLS, GROUNDS
-from ._common import announce, image_format, jsonable, long_run, progress
+from ..model.spin_axis import parse_spin_axis
+from ._common import SPEED_UNITS, announce, image_format, jsonable, long_run, progress
 from ._compliance import tangential_law, tangential_options
+from ._vocabulary import deprecated
+from ._vocabulary import help as _help
+from .sphere import VECTOR
 
 __all__ = ["flight_command"]
 
-#: m/s in one unit of each ``--speed-unit``.
-UNITS = {"m/s": 1.0, "km/h": 1.0 / 3.6, "mph": 0.44704}
+#: m/s in one unit of each ``--speed-unit`` (the shared table, under its older name here).
+UNITS = SPEED_UNITS
 
 
 def _axis(value: str) -> Any:
-    """``topspin``, ``backspin``, ``sidespin`` or a vector ``x,y,z``."""
-    if value.strip().lower() in ("topspin", "backspin", "sidespin"):
+    """``topspin``, ``backspin``, ``sidespin``, a combination of them or a vector ``x,y,z``."""
+    if "," not in value:
+        try:
+            parse_spin_axis(value, "--spin-axis")
+        except ValueError as exc:
+            raise click.UsageError(str(exc)) from None
         return value.strip().lower()
     try:
         parts = [float(p) for p in value.split(",")]
@@ -38,9 +46,26 @@ def _axis(value: str) -> Any:
         parts = []
     if len(parts) != 3:
         raise click.UsageError(
-            f"--spin-axis must be topspin, backspin, sidespin or x,y,z; got {value!r}"
+            "--spin-axis must be topspin, backspin, sidespin, a combination such as "
+            f"topspin+sidespin, or x,y,z; got {value!r}"
         )
     return parts
+
+
+def _spin(o: dict) -> dict[str, Any]:
+    """``--spin x,y,z`` (rad/s) as a rate and axis, or ``--spin-rpm`` about ``--spin-axis``."""
+    if o["spin"] is None:
+        return {"spin_axis": _axis(o["spin_axis"])}
+    ctx = click.get_current_context()
+    typed = [n for n in ("spin_rpm", "spin_axis", "spin_sd_rpm")
+             if ctx.get_parameter_source(n).name != "DEFAULT"]  # fmt: skip
+    if typed:
+        raise click.UsageError(f"give either --spin or --{typed[0].replace('_', '-')}")
+    w = np.asarray(o["spin"], float)
+    rate = float(np.linalg.norm(w))
+    if rate == 0:
+        return {"spin_rpm": 0.0, "spin_axis": "topspin"}
+    return {"spin_rpm": rate * 60 / (2 * math.pi), "spin_axis": list(w / rate)}
 
 
 def _targets(o: dict) -> None:
@@ -61,23 +86,25 @@ def _targets(o: dict) -> None:
 def _inputs(o: dict) -> dict[str, Any]:
     """The launch as :func:`~spinimpact.flight` takes it; scattered with ``--samples``."""
     speed = o["speed"] * UNITS[o["speed_unit"]]
-    given = {"speed": speed, "angle": o["angle"], "direction": o["direction"],
-             "spin_rpm": o["spin_rpm"]}  # fmt: skip
+    spin = _spin(o)
+    given = {"speed": speed, "angle": o["elevation_deg"], "direction": o["heading_deg"],
+             "spin_rpm": spin.pop("spin_rpm", o["spin_rpm"])}  # fmt: skip
+    o["spin_axis_value"] = spin["spin_axis"]
     if o["samples"] is None:
         ctx = click.get_current_context()
-        names = ("speed_sd", "angle_sd", "direction_sd", "spin_sd", "seed")
+        names = ("speed_sd", "elevation_sd_deg", "heading_sd_deg", "spin_sd_rpm", "seed")
         typed = [n for n in names if ctx.get_parameter_source(n).name != "DEFAULT"]
         if typed:
             raise click.UsageError(f"--{typed[0].replace('_', '-')} goes with --samples N")
         return given
-    for name in ("speed_sd", "angle_sd", "direction_sd", "spin_sd"):
+    for name in ("speed_sd", "elevation_sd_deg", "heading_sd_deg", "spin_sd_rpm"):
         if not (math.isfinite(o[name]) and o[name] >= 0):
             raise click.UsageError(f"--{name.replace('_', '-')} must be >= 0 (a standard "
                                    f"deviation), got {o[name]!r}")  # fmt: skip
     rng = np.random.default_rng(o["seed"])
     n = o["samples"]
-    spread = {"speed": o["speed_sd"] * UNITS[o["speed_unit"]], "angle": o["angle_sd"],
-              "direction": o["direction_sd"], "spin_rpm": o["spin_sd"]}  # fmt: skip
+    spread = {"speed": o["speed_sd"] * UNITS[o["speed_unit"]], "angle": o["elevation_sd_deg"],
+              "direction": o["heading_sd_deg"], "spin_rpm": o["spin_sd_rpm"]}  # fmt: skip
     out = {k: v + spread[k] * rng.standard_normal(n) for k, v in given.items()}
     out["speed"] = np.abs(out["speed"])  # a speed scattered below zero is a speed the other way
     return out
@@ -89,12 +116,13 @@ def _wall(o: dict) -> Any:
 
     if o["wall_distance"] is None:
         ctx = click.get_current_context()
-        names = ("wall_direction", "wall_mu", "wall_kappa")
+        names = ("wall_heading_deg", "wall_mu", "wall_kappa")
         typed = [n for n in names if ctx.get_parameter_source(n).name != "DEFAULT"]
         if typed:
             raise click.UsageError(f"--{typed[0].replace('_', '-')} needs --wall-distance")
         return None
-    return Wall(o["wall_distance"], o["wall_direction"], mu=o["wall_mu"], kappa=o["wall_kappa"])
+    return Wall(o["wall_distance"], o["wall_heading_deg"], mu=o["wall_mu"],
+                kappa=o["wall_kappa"])  # fmt: skip
 
 
 def _print_one(f: Any) -> None:
@@ -140,113 +168,109 @@ def _print_many(f: Any) -> None:
     type=click.Choice(list(BALLS)),
     default="tennis",
     show_default=True,
-    help="Ball preset (sources: docs/flight.md).",
+    help=_help("ball", "Sources: docs/flight.md."),
 )
 @click.option(
     "--surface",
     type=click.Choice(list(GROUNDS)),
     default="hard",
     show_default=True,
-    help="Ground preset: mu, kappa, rolling resistance.",
+    help=_help("surface"),
 )
-@click.option("--speed", type=float, default=30.0, show_default=True, help="Launch speed.")
-@click.option("--speed-unit", type=click.Choice(list(UNITS)), default="m/s", show_default=True)
 @click.option(
-    "--angle",
-    type=float,
-    default=0.0,
+    "--speed", type=float, default=30.0, show_default=True, help=_help("speed", "At launch.")
+)
+@click.option(
+    "--speed-unit",
+    type=click.Choice(list(UNITS)),
+    default="m/s",
     show_default=True,
-    help="Launch angle above the ground, degrees (negative: downwards).",
+    help=_help("speed-unit", "And --speed-sd."),
 )
 @click.option(
-    "--direction",
-    type=float,
-    default=0.0,
-    show_default=True,
-    help="Heading, degrees, counter-clockwise seen from above (0: +x, 90: -z).",
+    "--elevation-deg", type=float, default=0.0, show_default=True, help=_help("elevation-deg")
 )
 @click.option(
-    "--height",
-    type=float,
-    default=1.0,
-    show_default=True,
-    help="Launch height of the ball's centre, m.",
+    "--heading-deg", type=float, default=0.0, show_default=True, help=_help("heading-deg")
 )
 @click.option(
-    "--spin-rpm", type=float, default=0.0, show_default=True, help="Spin, revolutions per minute."
+    "--launch-height", type=float, default=1.0, show_default=True, help=_help("launch-height")
 )
+@click.option("--spin-rpm", type=float, default=0.0, show_default=True, help=_help("spin-rpm"))
 @click.option(
     "--spin-axis",
     default="topspin",
     show_default=True,
-    help="topspin, backspin, sidespin (about +y: curves left) or x,y,z.",
+    help=_help(
+        "spin-axis", "Sidespin is about +y: the ball curves left; topspin about y x heading."
+    ),
 )
-@click.option("--mu", type=float, default=None, help="Friction instead of the surface's.")
-@click.option("--kappa", type=float, default=None, help="Restitution instead of the surface's.")
 @click.option(
-    "--air-density",
-    type=float,
-    default=AIR_DENSITY,
-    show_default=True,
-    help="kg/m^3; 0 flies the exact parabola.",
+    "--spin",
+    type=VECTOR,
+    default=None,
+    help=_help("spin", "At launch, instead of --spin-rpm and --spin-axis."),
 )
-@click.option("--max-bounces", type=click.IntRange(1), default=30, show_default=True)
-@click.option("--t-stop", type=float, default=60.0, show_default=True, help="Stopping time, s.")
+@click.option("--mu", type=float, default=None, help=_help("mu", "Instead of the surface's."))
+@click.option("--kappa", type=float, default=None, help=_help("kappa", "Instead of the surface's."))
 @click.option(
-    "--dt",
-    type=float,
-    default=5e-3,
-    show_default=True,
-    help="Integrator step, s (impacts are located within it).",
+    "--air-density", type=float, default=AIR_DENSITY, show_default=True, help=_help("air-density")
 )
+@click.option(
+    "--max-bounces",
+    type=click.IntRange(1),
+    default=30,
+    show_default=True,
+    help=_help("max-bounces"),
+)
+@click.option("--t-stop", type=float, default=60.0, show_default=True, help=_help("t-stop"))
+@click.option("--dt", type=float, default=5e-3, show_default=True, help=_help("dt"))
 @click.option(
     "--samples",
     type=click.IntRange(1),
     default=None,
-    help="Fly this many balls, scattered by the --*-sd options.",
+    help=_help("samples", "Fly this many balls, scattered by the --*-sd options."),
 )
-@click.option("--speed-sd", type=float, default=0.0, help="With --samples: sd of the speed.")
-@click.option("--angle-sd", type=float, default=0.0, help="With --samples: sd, degrees.")
-@click.option("--direction-sd", type=float, default=0.0, help="With --samples: sd, degrees.")
-@click.option("--spin-sd", type=float, default=0.0, help="With --samples: sd of the spin, rpm.")
-@click.option("--seed", type=int, default=0, show_default=True, help="With --samples.")
+@click.option("--speed-sd", type=float, default=0.0, help=_help("speed-sd"))
+@click.option("--elevation-sd-deg", type=float, default=0.0, help=_help("elevation-sd-deg"))
+@click.option("--heading-sd-deg", type=float, default=0.0, help=_help("heading-sd-deg"))
+@click.option("--spin-sd-rpm", type=float, default=0.0, help=_help("spin-sd-rpm"))
 @click.option(
-    "--wall-distance",
-    type=float,
-    default=None,
-    help="A vertical wall this far from the origin along --wall-direction, m.",
+    "--seed", type=int, default=0, show_default=True, help=_help("seed", "With --samples.")
 )
+@click.option("--wall-distance", type=float, default=None, help=_help("wall-distance"))
 @click.option(
-    "--wall-direction",
-    type=float,
-    default=0.0,
-    show_default=True,
-    help="With --wall-distance: the wall faces back along this heading, degrees.",
+    "--wall-heading-deg", type=float, default=0.0, show_default=True, help=_help("wall-heading-deg")
 )
 @click.option(
     "--wall-mu",
     type=float,
     default=0.5,
     show_default=True,
-    help="With --wall-distance: the wall's friction (an assumption by default).",
+    help=_help("wall-mu", "An assumption by default."),
 )
 @click.option(
     "--wall-kappa",
     type=float,
     default=0.7,
     show_default=True,
-    help="With --wall-distance: the wall's restitution (an assumption by default).",
+    help=_help("wall-kappa", "An assumption by default."),
 )
-@click.option("--json", "as_json", is_flag=True, help="Print every field as JSON (SI units).")
-@click.option("--plot", default=None, help="Write side and top views (.png, .svg, .pdf).")
-@click.option("--animate", default=None, help="Write an animation (.gif; .mp4 with ffmpeg).")
-@click.option("--fps", type=click.IntRange(1, 60), default=20, show_default=True)
-@click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True)
+@click.option("--json", "as_json", is_flag=True, help=_help("json", "Every field, in SI units."))
+@click.option("--plot", default=None, help=_help("plot", "Side and top views."))
+@click.option("--animate", default=None, help=_help("animate"))
+@click.option("--fps", type=click.IntRange(1, 60), default=20, show_default=True, help=_help("fps"))
 @click.option(
-    "--force",
-    is_flag=True,
-    help="Fly even a flight estimated to take over an hour (a very fine --dt).",
+    "--dpi", type=click.IntRange(50, 600), default=110, show_default=True, help=_help("dpi")
 )
+@click.option("--force", is_flag=True, help=_help("force", "A very fine --dt."))
+@deprecated("--angle", "--elevation-deg", "elevation_deg", type=float)
+@deprecated("--direction", "--heading-deg", "heading_deg", type=float)
+@deprecated("--height", "--launch-height", "launch_height", type=float)
+@deprecated("--angle-sd", "--elevation-sd-deg", "elevation_sd_deg", type=float)
+@deprecated("--direction-sd", "--heading-sd-deg", "heading_sd_deg", type=float)
+@deprecated("--spin-sd", "--spin-sd-rpm", "spin_sd_rpm", type=float)
+@deprecated("--wall-direction", "--wall-heading-deg", "wall_heading_deg", type=float)
 @tangential_options
 def flight_command(**o: Any) -> None:
     """A spinning ball through the air (drag, Magnus lift, spin decay), bouncing exactly on
@@ -254,8 +278,8 @@ def flight_command(**o: Any) -> None:
 
     \b
     Axes: x along the ground, y up, z = x cross y. Example, a first serve:
-      spinimpact flight --ball tennis --surface hard --speed 50 --angle -6 --height 2.8
-        --spin-rpm 2000 --spin-axis topspin --plot serve.png
+      spinimpact flight --ball tennis --surface hard --speed 50 --elevation-deg -6
+        --launch-height 2.8 --spin-rpm 2000 --spin-axis topspin --plot serve.png
     """
     from ..model.presets import ground as as_ground
 
@@ -266,7 +290,7 @@ def flight_command(**o: Any) -> None:
     inputs = _inputs(o)
     law = tangential_law(o)
     kw = dict(
-        height=o["height"], spin_axis=_axis(o["spin_axis"]), air_density=o["air_density"],
+        height=o["launch_height"], spin_axis=o["spin_axis_value"], air_density=o["air_density"],
         max_bounces=o["max_bounces"], t_stop=o["t_stop"], dt=o["dt"], tangential=law,
         wall=_wall(o),
     )  # fmt: skip

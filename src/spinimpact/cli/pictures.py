@@ -4,6 +4,7 @@ one of them runs."""
 
 from __future__ import annotations
 
+import io
 import os
 from pathlib import Path
 from typing import Any
@@ -11,11 +12,13 @@ from typing import Any
 import click
 
 from ..model.body import PRESETS
-from ._common import image_format, make_body, surface_options
+from ._common import image_format, make_body, progress, surface_options
+from ._vocabulary import deprecated
+from ._vocabulary import help as _help
 
 __all__ = ["map_command", "figures_command"]
 
-_DPI_HELP = "Resolution of the image{}, pixels per inch."
+_DPI_HELP = "Image resolution, dots per inch{}."
 
 
 def _check_target(output: str) -> str:
@@ -38,45 +41,48 @@ def _check_target(output: str) -> str:
     "--body",
     type=click.Choice(list(PRESETS)),
     default=None,
-    help="Body preset (default solid-sphere): only its zeta = 1 + R^2/rho^2 matters.",
+    help=_help("body", "Default solid-sphere: only its zeta = 1 + R^2/rho^2 matters."),
 )
 @click.option(
     "--mass",
     type=float,
     default=1.0,
     show_default=True,
-    help="Mass m, kg. The maps are dimensionless: the mass changes nothing.",
+    help=_help("mass", "The maps are dimensionless: the mass changes nothing."),
 )
 @click.option(
     "--radius",
     type=float,
     default=0.1,
     show_default=True,
-    help="Contact radius R, m. Changes the maps only through zeta, with --gyration.",
+    help=_help("radius", "Changes the maps only through zeta, with --gyration."),
 )
 @click.option(
     "--gyration",
     type=float,
     default=None,
-    help="Radius of gyration rho, m: a custom body, zeta = 1 + R^2/rho^2.",
+    help=_help("gyration", "A custom body, zeta = 1 + R^2/rho^2."),
 )
 @surface_options
 @click.option(
-    "--output", default="map.png", show_default=True, help="Image file (.png, .svg, .pdf)."
+    "--output",
+    default="map.png",
+    show_default=True,
+    help=_help("output", "An image (.png, .svg, .pdf)."),
 )
 @click.option(
     "--extent",
     type=float,
     default=3.0,
     show_default=True,
-    help="Axes span [-extent, extent] in vx/|vy| and R*omega/|vy|.",
+    help=_help("extent", "The axes span [-extent, extent]."),
 )
 @click.option(
     "--resolution",
     type=click.IntRange(2, 4000),
     default=600,
     show_default=True,
-    help="Grid points per axis, at most: never more than a panel spans pixels at --dpi "
+    help="Grid points per axis of a map, at most: never more than a panel spans pixels at --dpi "
     "(more would add no pixel), so time and memory stay bounded by the image.",
 )
 @click.option(
@@ -100,9 +106,13 @@ def map_command(output: str, extent: float, resolution: int, dpi: int, **options
     fmt = _check_target(output)
     o = options
     body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
-    fig = plot_map(body, mu=o["mu"], kappa=o["kappa"], extent=extent, n=resolution, dpi=dpi)
+    image = io.BytesIO()  # rendered before the file is opened: a stop ends it at once
+    with progress() as bar:
+        bar.add_task(f"drawing {output} at {dpi} dpi", total=None)
+        fig = plot_map(body, mu=o["mu"], kappa=o["kappa"], extent=extent, n=resolution, dpi=dpi)
+        fig.savefig(image, format=fmt, dpi=dpi)
     with atomic_path(output) as tmp:
-        fig.savefig(tmp, format=fmt, dpi=dpi)
+        tmp.write_bytes(image.getbuffer())
     click.echo(output)
 
 
@@ -118,19 +128,21 @@ def _case_option(name: str, help: str) -> Any:
 
 @click.command("figures")
 @click.option(
-    "--output",
+    "--output-dir",
+    "output",
     type=click.Path(file_okay=False, writable=True),
     default="figures",
     show_default=True,
-    help="Directory to write into (created if missing).",
+    help=_help("output-dir"),
 )
+@deprecated("--output", "--output-dir", "output", type=click.Path(file_okay=False, writable=True))
 @click.option(
     "--format",
     "fmt",
     type=click.Choice(["png", "svg", "pdf"]),
     default="png",
     show_default=True,
-    help="Image format.",
+    help=_help("format"),
 )
 @click.option(
     "--dpi",
@@ -143,16 +155,16 @@ def _case_option(name: str, help: str) -> Any:
     "--body",
     type=click.Choice(list(PRESETS)),
     default=None,
-    help="Body preset (default solid-disk, as in the paper's figures).",
+    help=_help("body", "Default solid-disk, as in the paper's figures."),
 )
-@_case_option("mass", "Mass m, kg.")
-@_case_option("radius", "Contact radius R, m.")
-@_case_option("gyration", "Radius of gyration rho, m: a custom body instead of a preset.")
-@_case_option("vx", "Incidence vx, m/s (the paper's figures: each its own).")
-@_case_option("vy", "Incidence vy < 0, m/s.")
-@_case_option("omega", "Incidence spin, rad/s, counter-clockwise positive.")
-@_case_option("mu", "Friction >= 0.")
-@_case_option("kappa", "Restitution in [0, 1].")
+@_case_option("mass", _help("mass"))
+@_case_option("radius", _help("radius"))
+@_case_option("gyration", _help("gyration", "A custom body instead of a preset."))
+@_case_option("vx", _help("vx", "The paper's figures: each its own."))
+@_case_option("vy", _help("vy"))
+@_case_option("omega", _help("omega"))
+@_case_option("mu", _help("mu"))
+@_case_option("kappa", _help("kappa"))
 @click.pass_context
 def figures_command(ctx: click.Context, output: str, fmt: str, dpi: int, **o: Any) -> None:
     """Regenerate the paper's Figures 2, 3, 4a, 4b, 5a, 5b and 5c, or draw your own

@@ -4,8 +4,10 @@ a block on a corner, an eccentric disk) or of a pendulum on a fixed pivot.
 Prints the report (or JSON with ``--json``) and, on request, the report as an HTML page
 (``--html``), Routh's diagram
 (``--plot``), the three restitution laws side by side (``--laws-plot``) and the map of
-regimes over the body's angle and the slip ratio (``--map-plot``). Angles are
-taken in radians (``--angle``, SI) or in degrees (``--angle-deg``), converted once here.
+regimes over the body's orientation and the slip ratio (``--map-plot``). The body's
+orientation is given in degrees (``--orientation-deg``, measured from the surface) and
+converted once here to the radians of the Python API; the older ``--angle`` (radians) is a
+deprecated hidden option. Names, units and signs: ``docs/conventions.md``.
 """
 
 from __future__ import annotations
@@ -20,11 +22,15 @@ import click
 from ..model.planar import LAWS, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
 from ._common import jsonable
+from ._vocabulary import deprecated
+from ._vocabulary import help as _help
 
 __all__ = [
     "planar_command",
     "GEOMETRY",
     "make_planar_body",
+    "flag",
+    "orientation_options",
     "solve_planar_options",
     "preset_geometry",
 ]
@@ -40,6 +46,11 @@ _SPEED = 2.0  #: default |omega| of a pendulum, rad/s, toward the surface
 _GEOMETRY_OPTIONS = "length width height radius gyration offset angle angle_deg".split()
 
 
+def flag(name: str) -> str:
+    """The option of a geometry name: ``angle_deg`` is ``--orientation-deg``."""
+    return "--orientation-deg" if name == "angle_deg" else "--" + name.replace("_", "-")
+
+
 def make_planar_body(body: str, mass: float, geometry: dict[str, Any]) -> PlanarBody | Pendulum:
     """The body named by ``--body`` with the geometry options the user gave.
 
@@ -50,12 +61,13 @@ def make_planar_body(body: str, mass: float, geometry: dict[str, Any]) -> Planar
         kg.
     geometry : dict
         ``length``, ``width``, ``height``, ``radius``, ``gyration``, ``offset`` (m),
-        ``angle`` (rad) and ``angle_deg`` (degrees); ``None`` where not given.
+        ``angle`` (rad, the deprecated ``--angle``) and ``angle_deg`` (degrees,
+        ``--orientation-deg``); ``None`` where not given.
 
     Raises
     ------
     click.UsageError
-        An option the body does not take, or both ``--angle`` and ``--angle-deg``.
+        An option the body does not take, or both ``--angle`` and ``--orientation-deg``.
     ValueError
         A value out of range (from the body's preset).
     """
@@ -63,12 +75,14 @@ def make_planar_body(body: str, mass: float, geometry: dict[str, Any]) -> Planar
     for name, value in geometry.items():
         if value is not None and name not in spec and name != "angle":
             raise click.UsageError(
-                f"--{name} does not apply to --body {body} (it takes "
-                + ", ".join(f"--{n.replace('_', '-')}" for n in spec)
-                + " or --angle)"
+                f"{flag(name)} does not apply to --body {body} (it takes "
+                + ", ".join(flag(n) for n in spec)
+                + ")"
             )
     if geometry.get("angle") is not None and geometry.get("angle_deg") is not None:
-        raise click.UsageError("give either --angle (rad) or --angle-deg (degrees), not both")
+        raise click.UsageError(
+            "give either --orientation-deg or its old form --angle (rad), not both"
+        )
     size = {n: spec[n] if geometry.get(n) is None else geometry[n] for n in spec}
     deg = size.pop("angle_deg")
     in_rad = geometry.get("angle") is not None
@@ -84,7 +98,7 @@ def make_planar_body(body: str, mass: float, geometry: dict[str, Any]) -> Planar
     except ValueError as exc:  # the preset speaks radians; say what the user typed
         if in_rad or not str(exc).startswith("angle"):
             raise
-        raise ValueError(f"--angle-deg {deg:g} is {angle:.6g} rad: {exc}") from None
+        raise ValueError(f"--orientation-deg {deg:g} is {angle:.6g} rad: {exc}") from None
 
 
 def solve_planar_options(o: dict[str, Any]) -> tuple[PlanarImpact, dict[str, Any]]:
@@ -165,6 +179,21 @@ def _html_target(path: str | None) -> None:
         raise click.UsageError(f"--html: no such directory {str(parent)!r}")
 
 
+def orientation_options(function: Any) -> Any:
+    """``--orientation-deg`` (Python name ``angle_deg``) and its old names ``--angle-deg``
+    and ``--angle`` (radians), hidden; shared by ``planar`` and ``sweep --planar``."""
+    for option in reversed((
+        click.option("--orientation-deg", "angle_deg", type=float, default=None, help=_help(
+            "orientation-deg", "Per body: rod: its angle to the surface (default 45); block: "
+            "the tilt of --width (30); eccentric-disk: the direction of the offset (0); "
+            "pendulum: the rod's angle below the horizontal (60).")),
+        deprecated("--angle-deg", "--orientation-deg", "angle_deg", type=float),
+        deprecated("--angle", "--orientation-deg (in degrees)", type=float),
+    )):  # fmt: skip
+        function = option(function)
+    return function
+
+
 def _length(name: str, which: str) -> Any:
     return click.option(f"--{name}", type=float, default=None, help=which)
 
@@ -175,100 +204,77 @@ def _length(name: str, which: str) -> Any:
     type=click.Choice(list(GEOMETRY)),
     default="rod",
     show_default=True,
-    help="A slender rod on its end, a block on a corner, a disk with its centre of "
-    "mass off-centre, or a rod pendulum on a fixed pivot.",
+    help=_help(
+        "body",
+        "A slender rod on its end, a block on a corner, a disk with its centre of "
+        "mass off-centre, or a rod pendulum on a fixed pivot.",
+    ),
 )
-@click.option("--mass", type=float, default=1.0, show_default=True, help="Mass m, kg.")
-@_length("length", "Length L, m (rod, pendulum; default 1).")
-@_length("width", "Side along the tilt, m (block; default 0.2).")
-@_length("height", "Other side, m (block; default 0.1).")
-@_length("radius", "Rim radius R, m (eccentric-disk; default 0.1).")
-@_length(
-    "gyration", "Radius of gyration about the centre of mass, m (eccentric-disk; default 0.07)."
-)
-@_length("offset", "Centre of mass from the disk's centre, m, < R (eccentric-disk; default 0.02).")
-@click.option(
-    "--angle",
-    type=float,
-    default=None,
-    help="Angle in radians (SI); see --angle-deg for its meaning per body.",
-)
-@click.option(
-    "--angle-deg",
-    type=float,
-    default=None,
-    help="The same angle in degrees, converted once to radians: rod: to the surface "
-    "(default 45); block: tilt of --width (30); eccentric-disk: direction of the "
-    "offset (0); pendulum: below the horizontal (60).",
-)
-@click.option(
-    "--vx",
-    type=float,
-    default=None,
-    help="Centre velocity along the surface, m/s (default 1; not for a pendulum).",
-)
-@click.option(
-    "--vy",
-    type=float,
-    default=None,
-    help="Centre normal velocity, m/s (default -1; not for a pendulum).",
-)
+@click.option("--mass", type=float, default=1.0, show_default=True, help=_help("mass"))
+@_length("length", _help("length", "Rod, pendulum; default 1."))
+@_length("width", _help("width", "Block; default 0.2."))
+@_length("height", _help("height", "Block; default 0.1."))
+@_length("radius", _help("radius", "The rim of the eccentric-disk; default 0.1."))
+@_length("gyration", _help("gyration", "Eccentric-disk; default 0.07."))
+@_length("offset", _help("offset", "Less than R (eccentric-disk; default 0.02)."))
+@orientation_options
+@click.option("--vx", type=float, default=None, help=_help("vx", "Default 1; not for a pendulum."))
+@click.option("--vy", type=float, default=None, help=_help("vy", "Default -1; not for a pendulum."))
 @click.option(
     "--omega",
     type=float,
     default=None,
-    help="Spin, rad/s, counter-clockwise positive (default 0; pendulum: 2 rad/s "
-    "toward the surface).",
+    help=_help("omega", "Default 0; pendulum: 2 rad/s toward the surface."),
 )
-@click.option("--mu", type=float, default=0.3, show_default=True, help="Friction >= 0.")
-@click.option(
-    "--kappa", type=float, default=0.8, show_default=True, help="Restitution of --law, in [0, 1]."
-)
+@click.option("--mu", type=float, default=0.3, show_default=True, help=_help("mu"))
+@click.option("--kappa", type=float, default=0.8, show_default=True, help=_help("kappa"))
 @click.option(
     "--law",
     type=click.Choice(list(LAWS)),
     default="poisson",
     show_default=True,
-    help="Newton (kinematic), Poisson (kinetic) or Stronge (energetic) restitution.",
+    help=_help("law"),
 )
 @click.option(
     "--json",
     "as_json",
     is_flag=True,
-    help="Print every PlanarImpact field as JSON (infinite or undefined values are null).",
+    help=_help("json", "Every PlanarImpact field; infinite or undefined values are null."),
 )
-@click.option(
-    "--plot", default=None, help="Write Routh's diagram to this image (.png, .svg, .pdf)."
-)
-@click.option(
-    "--laws-plot", default=None, help="Write the three restitution laws side by side to this image."
-)
+@click.option("--plot", default=None, help=_help("plot", "Routh's diagram."))
+@click.option("--laws-plot", default=None, help=_help("laws-plot"))
 @click.option(
     "--html",
     "html_path",
     default=None,
-    help="Write the report as one self-contained HTML page (.html): the tables, the body's "
-    "geometry, the regime explained, Routh's diagram and the three laws.",
+    help=_help(
+        "html",
+        "(.html): the tables, the body's geometry, the regime explained, "
+        "Routh's diagram and the three laws.",
+    ),
 )
 @click.option(
     "--map-plot",
     default=None,
-    help="Write the map of regimes, and of where Newton's law creates energy, over the body's "
-    "angle (its whole range: --angle is ignored) and the slip ratio u-/|v-| (not for a pendulum).",
+    help=_help(
+        "map-plot",
+        "Also where Newton's law creates energy; over the orientation's "
+        "whole range (--orientation-deg is ignored) and u-/|v-| (not for a pendulum).",
+    ),
 )
 @click.option(
     "--resolution",
     type=click.IntRange(2, 2000),
     default=200,
     show_default=True,
-    help="Grid points per axis of --map-plot.",
+    help=_help("resolution", "Of --map-plot."),
 )
 @click.option(
     "--dpi",
     type=click.IntRange(50, 600),
     default=110,
     show_default=True,
-    help="Image dots per inch.",
+    help=_help("dpi"),
 )
 def planar_command(
     as_json: bool,
@@ -283,8 +289,8 @@ def planar_command(
     """Solve the impact of a planar body touching the surface off its centre line.
 
     The impulses couple through the collision matrix W: the slip can stop, stick or
-    reverse, and Newton's, Poisson's and Stronge's laws differ. SI units; angles in
-    radians with --angle, or in degrees with --angle-deg.
+    reverse, and Newton's, Poisson's and Stronge's laws differ. SI units, but the body's
+    orientation in degrees (--orientation-deg; see docs/conventions.md).
     """
     paths = {"--plot": plot, "--laws-plot": laws_plot, "--map-plot": map_plot}
     formats = {option: _image(option, path) for option, path in paths.items()}

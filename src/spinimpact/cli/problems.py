@@ -16,7 +16,7 @@ __all__ = ["problems_command"]
 
 @click.command("problems")
 @click.argument("name", required=False)
-@click.option("--json", "as_json", is_flag=True, help="Print the declaration as JSON.")
+@click.option("--json", "as_json", is_flag=True, help="Print as JSON: the declaration.")
 def problems_command(name: str | None, as_json: bool) -> None:
     """List the registered problems, or with NAME the inputs (unit, default, rule, vector)
     and result columns (unit) of one of them."""

@@ -7,6 +7,8 @@ from typing import Any
 import click
 
 from ._common import DEFAULTS, body_options, image_format, incidence_options, make_body
+from ._vocabulary import deprecated
+from ._vocabulary import help as _help
 
 __all__ = ["simulate_command"]
 
@@ -162,76 +164,95 @@ def _beta(sim: Any, rigid: Any) -> float:
 @click.command("simulate")
 @body_options
 @incidence_options
-@click.option("--mu", type=float, default=DEFAULTS["mu"], show_default=True, help="Friction >= 0.")
+@click.option("--mu", type=float, default=DEFAULTS["mu"], show_default=True, help=_help("mu"))
 @click.option(
     "--contact",
     type=click.Choice(["hertz", "hunt-crossley", "linear"]),
     default="hertz",
     show_default=True,
-    help="Normal contact law.",
+    help=_help("contact"),
 )
 @click.option(
     "--youngs-modulus",
     type=float,
     default=None,
-    help=f"E, Pa (hertz; default {_g(_HERTZ['youngs_modulus'])}).",
+    help=_help("youngs-modulus", f"Hertz; default {_g(_HERTZ['youngs_modulus'])}."),
 )
 @click.option(
     "--poisson-ratio",
     type=float,
     default=None,
-    help=f"nu (hertz; default {_HERTZ['poisson_ratio']:g}).",
+    help=_help("poisson-ratio", f"Hertz; default {_HERTZ['poisson_ratio']:g}."),
 )
 @click.option(
     "--stiffness",
     type=float,
     default=None,
-    help=f"k: N/m (linear; default {_g(_DEFAULT_STIFFNESS['linear'])}) or N/m^n "
-    f"(hunt-crossley; default {_g(_DEFAULT_STIFFNESS['hunt-crossley'])}). Hertz's comes "
-    "from E, nu and the radius.",
+    help=_help(
+        "stiffness",
+        f"N/m for linear (default {_g(_DEFAULT_STIFFNESS['linear'])}), "
+        f"N/m^n for hunt-crossley (default {_g(_DEFAULT_STIFFNESS['hunt-crossley'])}); Hertz's "
+        "comes from E, nu and the radius.",
+    ),
 )
-@click.option("--damping", type=float, default=None, help="c, N s/m (linear; instead of --kappa).")
-@click.option("--exponent", type=float, default=None, help="n (hunt-crossley; default 1.5).")
+@click.option(
+    "--damping", type=float, default=None, help=_help("damping", "Linear; instead of --kappa.")
+)
+@click.option("--exponent", type=float, default=None, help=_help("exponent", "Default 1.5."))
 @click.option(
     "--alpha",
     type=float,
     default=None,
-    help="Hunt-Crossley damping, s/m (hertz, hunt-crossley; instead of --kappa).",
+    help=_help("alpha", "Hertz, hunt-crossley; instead of --kappa."),
 )
 @click.option(
     "--kappa",
     type=float,
     default=None,
-    help=f"Restitution in (0, 1] the law gives at the impact speed |vy|: its damping "
-    f"(--damping or --alpha) is calibrated to it; 1 is elastic. Default {DEFAULTS['kappa']:g}, "
-    "as solve, unless --damping or --alpha is given.",
+    help=_help(
+        "kappa",
+        "Here in (0, 1]: the law's at the impact speed |vy|, to which its "
+        "damping (--damping or --alpha) is calibrated; 1 is elastic. Default "
+        f"{DEFAULTS['kappa']:g}, as solve, unless --damping or --alpha is given.",
+    ),
 )
-@click.option("--target-kappa", type=float, default=None, help="Older name of --kappa.")
-@click.option("--rtol", type=float, default=1e-10, show_default=True, help="Integrator tolerance.")
+@deprecated("--target-kappa", "--kappa", type=float)
+@click.option("--rtol", type=float, default=1e-10, show_default=True, help=_help("rtol"))
 @click.option(
     "--tangential",
     type=click.Choice(["none", "mindlin"]),
     default="none",
     show_default=True,
-    help="Tangential compliance: none (a rigid contact point, as the paper) or mindlin "
-    "(a tangential spring k_t = 8 G* a with Coulomb slip).",
+    help=_help(
+        "tangential",
+        "none (a rigid contact point, as the paper) or mindlin "
+        "(a tangential spring k_t = 8 G* a with Coulomb slip).",
+    ),
 )
 @click.option(
     "--stiffness-ratio",
     type=float,
     default=None,
-    help="k_t/k_n of the mindlin spring, > 0 (default 2(1-nu)/(2-nu) from --poisson-ratio "
-    "with --contact hertz; needed with linear and hunt-crossley).",
+    help=_help(
+        "stiffness-ratio",
+        "Of the mindlin spring (default 2(1-nu)/(2-nu) from "
+        "--poisson-ratio with --contact hertz; needed with linear and hunt-crossley).",
+    ),
 )
 @click.option(
     "--spring",
     type=click.Choice(["scaled", "incremental", "total", "history"]),
     default=None,
-    help="How the stuck mindlin spring follows its stiffness: scaled (default; its energy "
-    "never grows), incremental, total (displacement times the current stiffness), or "
-    "history (the exact no-slip elastic rule: the force unloads along its loading history).",
+    help=_help(
+        "spring",
+        "scaled (default; its energy never grows), incremental, total "
+        "(displacement times the current stiffness), or history (the exact no-slip elastic rule: "
+        "the force unloads along its loading history).",
+    ),
 )
-@click.option("--plot", "plot_file", default=None, help="Write N(t), F(t) and the velocities here.")
+@click.option(
+    "--plot", "plot_file", default=None, help=_help("plot", "N(t), F(t) and the velocities.")
+)
 def simulate_command(plot_file: str | None, **o: Any) -> None:
     """Integrate one impact in time with a compliant contact law and compare it
     with the rigid-body closed form at the law's own restitution."""

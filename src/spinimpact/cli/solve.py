@@ -20,6 +20,7 @@ from ._common import (
     surface_options,
 )
 from ._compliance import print_compliant, tangential_law, tangential_options
+from ._vocabulary import help as _help
 
 __all__ = ["solve_command", "report_command"]
 
@@ -38,7 +39,7 @@ def _particle(o: dict[str, Any]) -> ParticleImpact:
     "--json",
     "as_json",
     is_flag=True,
-    help="Print every Impact field as JSON (infinite or undefined values are null).",
+    help=_help("json", "Every Impact field; infinite or undefined values are null."),
 )
 def solve_command(as_json: bool, **options: Any) -> None:
     """Solve one impact and print the report (regime, rebound, energy, works, mu_hat).
@@ -82,7 +83,9 @@ def solve_command(as_json: bool, **options: Any) -> None:
 @body_options
 @incidence_options
 @surface_options
-@click.option("--output", default="impact.html", show_default=True, help="HTML file to write.")
+@click.option(
+    "--output", default="impact.html", show_default=True, help=_help("output", "The HTML page.")
+)
 def report_command(output: str, **options: Any) -> None:
     """Write one self-contained HTML page about an impact: inputs, regime, rebound,
     energy budget, works by phase, coefficients, outcome and figures."""

@@ -28,6 +28,8 @@ from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
 from ._compliance import sweep_class, tangential_options
 from ._sphere_sweep import SPHERE_ONLY, sphere_options, sphere_sweep
+from ._vocabulary import help as _help
+from .planar import orientation_options
 
 __all__ = ["sweep_command"]
 
@@ -51,7 +53,7 @@ def _given(ctx: click.Context, name: str) -> bool:
 
 
 def _flag(name: str) -> str:
-    return "--" + name.replace("_", "-")
+    return "--orientation-deg" if name == "angle_deg" else "--" + name.replace("_", "-")
 
 
 def _planar_body(ctx: click.Context, o: dict[str, Any]) -> Any:
@@ -188,111 +190,119 @@ def _dask_client(address: str | None) -> Any:
     "--planar",
     type=click.Choice(list(_PLANAR)),
     default=None,
-    help="Sweep a planar body instead: a rod on its end, a block on a corner, an "
-    "eccentric disk, a rod pendulum on a pivot (axes --omega, --mu, --kappa), or a custom "
-    "body (--inertia, --rx, --ry). Geometry as in 'spinimpact planar'; --mass applies.",
+    help=_help(
+        "planar",
+        "A rod on its end, a block on a corner, an eccentric disk, a rod "
+        "pendulum on a pivot (axes --omega, --mu, --kappa), or a custom body (--inertia, --rx, "
+        "--ry). Geometry as in 'spinimpact planar'; --mass applies.",
+    ),
 )
-@click.option("--length", type=float, default=None, help="Rod, pendulum: length L, m (default 1).")
-@click.option("--width", type=float, default=None, help="Block: side along the tilt, m (0.2).")
-@click.option("--height", type=float, default=None, help="Block: other side, m (0.1).")
+@click.option("--length", type=float, default=None, help=_help("length", "Default 1."))
+@click.option("--width", type=float, default=None, help=_help("width", "Default 0.2."))
+@click.option("--height", type=float, default=None, help=_help("height", "Default 0.1."))
 @click.option(
     "--offset",
     type=float,
     default=None,
-    help="Eccentric disk: centre of mass from the disk's centre, m (0.02); its --radius "
-    "(0.1) and --gyration (0.07) are the options above.",
+    help=_help(
+        "offset", "Default 0.02; its --radius (0.1) and --gyration (0.07) are the options above."
+    ),
 )
-@click.option("--angle", type=float, default=None, help="The body's angle, rad (see --angle-deg).")
-@click.option(
-    "--angle-deg",
-    type=float,
-    default=None,
-    help="The same in degrees: rod: to the surface (default 45); block: tilt of --width "
-    "(30); eccentric-disk: direction of the offset (0); pendulum: below the horizontal (60).",
-)
-@click.option("--inertia", type=float, default=None, help="Custom: inertia J about G, kg m^2.")
-@click.option("--rx", type=float, default=None, help="Custom: contact point from G along x, m.")
-@click.option(
-    "--ry", type=float, default=None, help="Custom: contact point from G along y, m, < 0."
-)
+@orientation_options
+@click.option("--inertia", type=float, default=None, help=_help("inertia", "Custom body."))
+@click.option("--rx", type=float, default=None, help=_help("rx", "Custom body."))
+@click.option("--ry", type=float, default=None, help=_help("ry", "Custom body."))
 @click.option(
     "--law",
     type=click.Choice(list(LAWS)),
     default="poisson",
     show_default=True,
-    help="Restitution law of a --planar sweep (the paper's bodies obey the three alike).",
+    help=_help("law", "Of a --planar sweep (the paper's bodies obey the three alike)."),
 )
 @click.option(
     "--vx",
     default=None,
-    help="m/s: a number, START:STOP:NUM (a grid) or uniform:LOW:HIGH (random, with "
-    "--samples). Default -5:5:201, or uniform:-5:5 for random points.",
+    help=_help(
+        "vx",
+        "A number, START:STOP:NUM (a grid) or uniform:LOW:HIGH (random, with "
+        "--samples). Default -5:5:201, or uniform:-5:5 for random points.",
+    ),
 )
-@click.option("--vy", default="-4", show_default=True, help="As --vx, m/s; values < 0.")
+@click.option("--vy", default="-4", show_default=True, help=_help("vy", "As --vx."))
 @click.option(
     "--omega",
     default=None,
-    help="As --vx, rad/s. Default -50:50:201, or uniform:-50:50 for random points "
-    "(--planar: 0, a pendulum 2 rad/s toward the surface).",
+    help=_help(
+        "omega",
+        "As --vx. Default -50:50:201, or uniform:-50:50 for random points "
+        "(--planar: 0, a pendulum 2 rad/s toward the surface).",
+    ),
 )
-@click.option("--mu", default=str(DEFAULTS["mu"]), show_default=True, help="As --vx.")
-@click.option("--kappa", default=str(DEFAULTS["kappa"]), show_default=True, help="As --vx.")
+@click.option("--mu", default=str(DEFAULTS["mu"]), show_default=True, help=_help("mu", "As --vx."))
+@click.option(
+    "--kappa", default=str(DEFAULTS["kappa"]), show_default=True, help=_help("kappa", "As --vx.")
+)
 @click.option(
     "--samples",
     type=click.IntRange(1),
     default=None,
-    help="Number of random points: the uniform axes are drawn at random (and --vx, --omega "
-    "not typed default to uniform ranges).",
+    help=_help(
+        "samples",
+        "The uniform axes are drawn at random (and --vx, --omega not typed "
+        "default to uniform ranges).",
+    ),
 )
 @click.option(
     "--seed",
     type=int,
     default=0,
     show_default=True,
-    help="Seed of the random points: the same seed gives the same points whatever "
-    "--chunk-size or --dask.",
+    help=_help("seed", "The same seed gives the same points whatever --chunk-size or --dask."),
 )
 @click.option(
     "--chunk-size",
     type=click.IntRange(1),
     default=1_000_000,
     show_default=True,
-    help="Points computed at a time; memory is bounded by it (--dry-run estimates it; "
-    "--planar: default 100000).",
+    help=_help("chunk-size", "--dry-run estimates it; --planar: default 100000."),
 )
 @click.option(
     "--output",
     default=None,
-    help="FILE.parquet or FILE.csv ([parquet] extra), or a new directory of .npy files (a "
-    "name without a suffix, or ending in /): one per column and metadata.json. The inputs "
-    "and --fields; regime as names (a dictionary column in Parquet; in .npy, int8 indices "
-    'into metadata.json\'s "regimes"), units in Parquet field metadata and metadata.json.',
+    help="Output file: FILE.parquet or FILE.csv ([parquet] extra), or a new directory of "
+    ".npy files (a name without a suffix, or ending in /): one per column and "
+    "metadata.json. The inputs and --fields; regime as names (a dictionary column in "
+    'Parquet; in .npy, int8 indices into metadata.json\'s "regimes"), units in '
+    "Parquet field metadata and metadata.json.",
 )
 @click.option(
     "--fields",
     default="after_vx,after_vy,after_omega,regime",
     show_default=True,
-    help="Comma-separated fields to write, named as the Impact's columns (after_vx, "
+    help="Result columns to write, comma-separated, named as the Impact's columns (after_vx, "
     "after_vy, after_omega, regime, slip_before, slip_after, impulse_ratio, "
     "dissipated_energy, dissipated_fraction; energy_loss is an alias of dissipated_fraction). "
     "--planar: any PlanarImpact column that is not an input (also creates_energy, tau0, "
     "tau1, newton_restitution, ...). --sphere: any SphereImpact column that is not an "
     "input (default after_vx..after_wz, regime; also grips, topspin, rebound_angle, ...).",
 )
-@click.option("--histogram", default=None, help="FIELD:LOW:HIGH:BINS, accumulated on the fly.")
+@click.option("--histogram", default=None, help=_help("histogram"))
 @sphere_options
 @tangential_options
-@click.option("--dask", "dask_address", default=None, help="Run the chunks on this Dask scheduler.")
+@click.option("--dask", "dask_address", default=None, help=_help("dask"))
 @click.option(
     "--dry-run",
     is_flag=True,
-    help="Print the estimate (points, time, memory a chunk, output size; the points it was "
-    "measured on: the sweep's first, as many as are cheap) and stop.",
+    help=_help(
+        "dry-run",
+        "Points, time, memory a chunk, output size; the points it was "
+        "measured on: the sweep's first, as many as are cheap.",
+    ),
 )
 @click.option(
     "--force",
     is_flag=True,
-    help="Run even a sweep estimated not to fit in memory or on disk, or to take over an hour.",
+    help=_help("force", "Or not to fit in memory or on disk."),
 )
 @click.pass_context
 def sweep_command(
@@ -312,7 +322,7 @@ def sweep_command(
     regime fractions (always), a histogram, and/or the fields written to files.
 
     One of the paper's bodies (--body, --gyration), or with --planar one planar body or
-    pendulum under one --law, e.g. --planar rod --length 1 --angle-deg 45 --law newton."""
+    pendulum under one --law, e.g. --planar rod --length 1 --orientation-deg 45 --law newton."""
     from ..io.sweep import estimate_sweep, parse_axis, run_sweep
 
     make = sweep_class(o)  # Sweep, or a CompliantSweep of the --tangential law

@@ -11,7 +11,7 @@ import numpy as np
 from .._validation import MAX_ZETA, as_real_array, check, validated
 from .result import BodyColumns
 
-__all__ = ["Body", "PRESETS", "SHELL_GYRATION", "check_sphere"]
+__all__ = ["Body", "PRESETS", "SHELL_GYRATION", "as_body", "check_sphere"]
 
 #: Squared radius of gyration over squared radius, ``rho^2/R^2``, of the presets.
 PRESETS: dict[str, float] = {
@@ -205,6 +205,35 @@ class Body(BodyColumns):
             f"Body(name={self.name!r}, mass={fmt(self.mass)}, radius={fmt(self.radius)}, "
             f"gyration={fmt(self.gyration)}, zeta={fmt(self.zeta)})"
         )
+
+
+def as_body(body: Any, name: str = "body") -> Body:
+    """``body`` as a :class:`Body`: a Body as it is, a ball (:class:`~spinimpact.Ball`,
+    e.g. ``BALLS["tennis"]``) as its :attr:`~spinimpact.Ball.body`.
+
+    Every solver that takes a body takes a ball through this: ``solve``,
+    ``solve_sphere``, ``solve_pair``, ``simulate`` and ``fit``.
+
+    Parameters
+    ----------
+    body : Body or Ball
+    name : str
+        The parameter named in the error (``"ball1"``).
+
+    Raises
+    ------
+    TypeError
+        For anything else, naming ``name`` and the type given.
+    """
+    if isinstance(body, Body):
+        return body
+    from .presets import Ball  # presets imports this module
+
+    if isinstance(body, Ball):
+        return body.body
+    raise TypeError(
+        f"{name} must be a spinimpact.Body or a spinimpact.Ball, got {type(body).__name__}"
+    )
 
 
 def check_sphere(body: Body, name: str = "gyration") -> None:

@@ -12,7 +12,7 @@ from .. import core
 from .._validation import as_real_array, broadcast, check, validated, whole
 from . import _fast, _impact_fused, result
 from ._hooks import tangential_law
-from .body import Body
+from .body import Body, as_body
 from .result import Result, freeze, plain_repr, regime_counts
 
 __all__ = ["State", "Outcome", "History", "Impact", "solve"]
@@ -319,10 +319,9 @@ def solve(
     >>> str(imp.regime), round(float(imp.after.vx / imp.before.vx), 12)   # 5/7 rule
     ('stick-compression', 0.714285714286)
     """
+    body = as_body(body)
     if tangential is not None:  # the law solves it (spinimpact.model.compliance)
         return tangential_law(tangential)._solve_plane(body, vx, vy, omega, mu=mu, kappa=kappa)
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     one = _fast.paper_impact(body, vx, vy, omega, mu, kappa, (Impact, State, Outcome))
     if one is not None:  # one impact of plain numbers: the same Impact, in microseconds
         return one

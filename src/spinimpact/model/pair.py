@@ -18,7 +18,7 @@ from .. import core
 from .._validation import approach, check, validated, vector3
 from ..core import sphere3d as kernels
 from . import _fast_sphere
-from .body import Body, check_sphere
+from .body import Body, as_body, check_sphere
 from .impact import _restitution
 from .result import Array, Result, freeze
 from .sphere3d import State3, Vector, _state, _summary, _vector, _xyz
@@ -176,9 +176,7 @@ def solve_pair(
     >>> round(float(imp.after2.vz), 4), str(imp.regime)
     (-1.93, 'slip')
     """
-    for name, ball in (("ball1", ball1), ("ball2", ball2)):
-        if not isinstance(ball, Body):
-            raise TypeError(f"{name} must be a spinimpact.Body, got {type(ball).__name__}")
+    ball1, ball2 = as_body(ball1, "ball1"), as_body(ball2, "ball2")
     for name, ball in (("ball1", ball1), ("ball2", ball2)):
         check_sphere(ball, f"{name}'s gyration")
     one = _fast_sphere.pair_impact(ball1, ball2, velocity1, spin1, velocity2, spin2, mu, kappa,

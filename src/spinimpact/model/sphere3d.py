@@ -20,7 +20,7 @@ from .._validation import approach, check, validated, vector3, whole
 from ..core import sphere3d as kernels
 from . import _fast_sphere
 from ._hooks import tangential_law
-from .body import Body, check_sphere
+from .body import Body, as_body, check_sphere
 from .impact import _restitution
 from .result import Array, Result, freeze, regime_counts
 
@@ -312,11 +312,10 @@ def solve_sphere(
     >>> str(imp.regime), float(imp.after.wy)
     ('stick-restitution', 150.0)
     """
+    body = as_body(body)
     if tangential is not None:  # the law solves it (spinimpact.model.compliance)
         return tangential_law(tangential)._solve_sphere(body, velocity, spin, mu=mu,
                                                         kappa=kappa, surface=surface)  # fmt: skip
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     check_sphere(body)  # before the fast path, which skips _incidence (it checks too)
     kinds = (SphereImpact, State3, Vector, Surface)
     one = _fast_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
