@@ -26,6 +26,7 @@ import numpy as np
 __all__ = [
     "approach",
     "as_real_array",
+    "callback",
     "scalar",
     "whole",
     "vector3",
@@ -264,6 +265,14 @@ def whole(name: str, value: object, low: int | None = None) -> int:
     if low is not None and value < low:
         raise ValueError(f"{name} must be an integer >= {low}, got {value!r}")
     return int(value)
+
+
+def callback(name: str, value: Any, call: str) -> Any:
+    """``value`` if it is ``None`` or callable, else a ``TypeError`` naming ``name`` and how
+    it is called (``call``, e.g. ``"progress(done, total)"``), before any work starts."""
+    if value is not None and not callable(value):
+        raise TypeError(f"{name} must be a callable {call}, or None, got {value!r}")
+    return value
 
 
 def setting(

@@ -78,3 +78,10 @@ def test_a_huge_csv_field_names_its_row_and_the_limit(cli, tmp_path, monkeypatch
     monkeypatch.setattr("sys.stdin", io.StringIO(header))
     status, out, err = cli("batch", "-", "--output", tmp_path / "out.csv")
     assert_one_line(status, out, err, "the header (line 1): a field longer than")
+
+
+def test_simulate_names_the_options_behind_a_tiny_inertia(cli):
+    """It said "inertia must be >= 1e-50", which is no option of simulate."""
+    status, out, err = cli("simulate", "--mass", 1e-50, "--radius", 1e-49)
+    assert_one_line(status, out, err, "the moment of inertia mass * gyration**2 must be")
+    assert "mass 1e-50 kg, radius 1e-49 m" in err

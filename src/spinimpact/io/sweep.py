@@ -46,7 +46,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import validated, whole
+from .._validation import callback, validated, whole
 from ..model.body import Body
 from ._axes import INPUTS, Axis, parse_axis, positive_int, uniform_stream
 from ._fields import (
@@ -357,6 +357,7 @@ def run_sweep(
     (5, [0, 5, 0, 0])
     """
     kind, columns = plan(sweep, fields, histogram, output)
+    callback("progress", progress, "progress(done, total)")
     if check and sweep.size > TRIAL_POINTS:
         cost = estimate_sweep(sweep, histogram=histogram, output=output, fields=fields, timed=False)
         problems = cost.problems()

@@ -13,9 +13,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import core
-from .._validation import scalar
+from .._validation import SMALLEST, scalar
 from ..core import contact as kernels
-from .body import Body, as_body
+from .body import Body
 from .contact import ContactLaw, _tolerance
 from .impact import Impact, State, solve
 from .result import Result, freeze
@@ -185,7 +185,6 @@ def simulate(
     >>> bool(abs(sim.after.vx - rigid.after.vx) < 1e-8)
     True
     """
-    body = as_body(body)
     if tangential is not None:
         from .mindlin import simulate_tangential
 
@@ -193,9 +192,17 @@ def simulate(
                                    tangential=tangential, rtol=rtol)  # fmt: skip
     if not isinstance(contact, ContactLaw):
         raise TypeError(f"contact must be a spinimpact contact law, got {type(contact).__name__}")
+    if not isinstance(body, Body):
+        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     m = scalar("mass", body.mass, why=_ONE)
     r = scalar("radius", body.radius, why=_ONE)
-    j = scalar("inertia", body.inertia, "mass", why=_ONE)  # positive, like a mass
+    j = scalar("inertia", body.inertia, why=_ONE)
+    if not j >= SMALLEST:  # J = m rho^2 is not an input: name those it comes from
+        raise ValueError(
+            f"the moment of inertia mass * gyration**2 must be >= {SMALLEST:g} kg m^2, got "
+            f"{j!r} (mass {m!r} kg, radius {r!r} m, gyration {float(body.gyration)!r} m): "
+            "a heavier or larger body"
+        )
     vx_, vy_, om_, mu_ = (
         scalar(n, v, why=_ONE) for n, v in (("vx", vx), ("vy", vy), ("omega", omega), ("mu", mu))
     )
