@@ -9,16 +9,44 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["INPUTS", "KINDS", "NAMES", "Axis", "parse_axis", "positive_int", "uniform_stream"]
+__all__ = [
+    "INPUTS",
+    "KINDS",
+    "NAMES",
+    "Axis",
+    "axis_names",
+    "parse_axis",
+    "positive_int",
+    "uniform_stream",
+]
 
 #: The inputs a sweep varies (SI units): vx, vy in m/s, omega in rad/s, mu and kappa.
 INPUTS = ("vx", "vy", "omega", "mu", "kappa")
-#: Every name an axis may have: :data:`INPUTS`, then a sphere's ``vz`` (m/s) and spin
-#: ``wx, wy, wz`` (rad/s) (:mod:`~spinimpact.io.sphere_sweep`). A name's place here numbers
-#: its random stream, so new names go at the end.
+#: The names of the paper's, the planar and the sphere sweeps' axes: :data:`INPUTS`, then a
+#: sphere's ``vz`` (m/s) and spin ``wx, wy, wz`` (rad/s) (:mod:`~spinimpact.io.sphere_sweep`).
+#: A name's place here numbers its random stream, so new names go at the end. Any numeric
+#: input of a registered problem may be an axis too (:func:`axis_names`,
+#: :mod:`~spinimpact.io.problem_sweep`); its stream is numbered by its name.
 NAMES = (*INPUTS, "vz", "wx", "wy", "wz")
 #: The kinds of axis.
 KINDS = ("fixed", "grid", "uniform")
+
+
+def axis_names() -> tuple[str, ...]:
+    """Every name an axis may have: :data:`NAMES`, then each numeric input of the registered
+    problems (:func:`spinimpact.problems`) not among them, in registration order."""
+    from ..model.registry import problems
+
+    extra = (i.name for p in problems() for i in p.inputs if not i.text)
+    return tuple(dict.fromkeys((*NAMES, *extra)))
+
+
+def _stream(name: str) -> int:
+    """The number of ``name``'s random stream: its place in :data:`NAMES`, else a number
+    made of its name's bytes (at least 256, so it differs from every place)."""
+    if name in NAMES:
+        return NAMES.index(name)
+    return int.from_bytes(b"\x01" + name.encode(), "big")
 
 
 def _real(name: str, value: object) -> float:
@@ -35,7 +63,7 @@ class Axis:
     Parameters
     ----------
     name : str
-        The input, one of :data:`INPUTS`; a sweep takes the axis only under this name.
+        The input, one of :func:`axis_names`; a sweep takes the axis only under this name.
     kind : {"fixed", "grid", "uniform"}
     lo, hi : float
         The value (``fixed``; ``hi`` unused), or the ends (finite; ``lo < hi`` for
@@ -69,8 +97,11 @@ class Axis:
     num: int = 1
 
     def __post_init__(self) -> None:
-        if not isinstance(self.name, str) or self.name not in NAMES:
-            raise ValueError(f"an axis's name must be one of {', '.join(NAMES)}, got {self.name!r}")
+        if not isinstance(self.name, str) or (
+            self.name not in NAMES and self.name not in axis_names()
+        ):
+            names = ", ".join(axis_names())
+            raise ValueError(f"an axis's name must be one of {names}, got {self.name!r}")
         if not isinstance(self.kind, str) or self.kind not in KINDS:
             raise ValueError(
                 f"{self.name}: an axis's kind must be one of {', '.join(KINDS)}, got {self.kind!r}"
@@ -134,7 +165,7 @@ def uniform_stream(seed: int, name: str, start: int, n: int, lo: float, hi: floa
     """Points ``start`` to ``start + n`` of input ``name``'s random stream, uniform on
     ``[lo, hi)``: the stream is advanced to ``start`` (each value takes one 64-bit draw),
     so the numbers do not depend on how the points are cut into chunks."""
-    bits = np.random.PCG64(np.random.SeedSequence([seed, NAMES.index(name)]))
+    bits = np.random.PCG64(np.random.SeedSequence([seed, _stream(name)]))
     bits.advance(start)
     return np.random.Generator(bits).uniform(lo, hi, n)
 
@@ -145,10 +176,10 @@ def parse_axis(name: str, text: str | float) -> Axis:
     Parameters
     ----------
     name : str
-        One of :data:`NAMES`.
+        One of :func:`axis_names`.
     text : str or float
-        ``"3"`` (fixed), ``"-5:5:101"`` (grid: start, stop, number of points) or
-        ``"uniform:-5:5"`` (random).
+        ``"3"`` (fixed), ``"-5:5:101"`` or ``"grid:-5:5:101"`` (grid: start, stop, number
+        of points) or ``"uniform:-5:5"`` (random).
 
     Raises
     ------
@@ -161,9 +192,11 @@ def parse_axis(name: str, text: str | float) -> Axis:
     >>> parse_axis("vx", "-5:5:101")
     Axis(name='vx', kind='grid', lo=-5.0, hi=5.0, num=101)
     """
-    if name not in NAMES:
-        raise ValueError(f"sweep inputs are {', '.join(NAMES)}; got {name!r}")
+    if name not in NAMES and name not in axis_names():
+        raise ValueError(f"sweep inputs are {', '.join(axis_names())}; got {name!r}")
     parts = str(text).split(":")
+    if len(parts) == 4 and parts[0] == "grid":
+        parts = parts[1:]
     try:
         if len(parts) == 1:
             spec: tuple = ("fixed", float(parts[0]))
@@ -178,5 +211,6 @@ def parse_axis(name: str, text: str | float) -> Axis:
     if spec:
         return Axis(name, *spec)  # its own message for what the numbers break
     raise ValueError(
-        f"{name} must be a number, START:STOP:NUM (a grid) or uniform:LOW:HIGH, got {text!r}"
+        f"{name} must be a number, START:STOP:NUM (a grid; grid:START:STOP:NUM alike) or "
+        f"uniform:LOW:HIGH, got {text!r}"
     )

@@ -31,7 +31,7 @@ from .._validation import require, whole
 from ..core import fused
 from . import _stop
 from ._sinks import ArrowWriter
-from ._units import UNITS, unit_metadata
+from ._units import unit_metadata, unit_of
 from .atomic import atomic_path
 
 __all__ = [
@@ -180,17 +180,24 @@ class TableColumns:
 
     ``regime`` (integer codes) becomes a dictionary column whose dictionary is the
     regimes' names, so a reader gets names; each column with a unit names it in its
-    Parquet field metadata (``{"unit": "m/s"}``), and the file's metadata says what the
-    sweep was (:meth:`Sweep.metadata <spinimpact.io.sweep.Sweep.metadata>`).
+    Parquet field metadata (``{"unit": "m/s"}``: ``units(name)``, by default the package's
+    vocabulary), and the file's metadata says what the sweep was
+    (:meth:`Sweep.metadata <spinimpact.io.sweep.Sweep.metadata>`).
     """
 
     def __init__(
-        self, out: Any, fmt: str, metadata: dict[str, str], regimes: Sequence[str]
+        self,
+        out: Any,
+        fmt: str,
+        metadata: dict[str, str],
+        regimes: Sequence[str],
+        units: Callable[[str], str | None] | None = None,
     ) -> None:
         self.pa = require("pyarrow", "Parquet and CSV output")
         self.writer = ArrowWriter(out, fmt)
         self.metadata = metadata if fmt == "parquet" else None
         self.names = self.pa.array(list(regimes), self.pa.string())
+        self.units = units
 
     def table(self, data: dict[str, np.ndarray]) -> Any:
         """One chunk's columns as a pyarrow table."""
@@ -204,7 +211,9 @@ class TableColumns:
             else:
                 array = pa.array(np.ascontiguousarray(values))
             arrays.append(array)
-            fields.append(pa.field(name, array.type, metadata=unit_metadata(name)))
+            unit = None if self.units is None else self.units(name)
+            meta = unit_metadata(name) if self.units is None else unit and {b"unit": unit.encode()}
+            fields.append(pa.field(name, array.type, metadata=meta or None))
         return pa.Table.from_arrays(arrays, schema=pa.schema(fields, self.metadata))
 
     def write(self, data: dict[str, np.ndarray]) -> None:
@@ -233,10 +242,14 @@ class TableColumns:
 
 @contextlib.contextmanager
 def table_columns(
-    path: str | os.PathLike[str], fmt: str, metadata: dict[str, str], regimes: Sequence[str]
+    path: str | os.PathLike[str],
+    fmt: str,
+    metadata: dict[str, str],
+    regimes: Sequence[str],
+    units: Callable[[str], str | None] | None = None,
 ) -> Iterator[TableColumns]:
     """A :class:`TableColumns` writing the file ``path``, renamed into place on success
-    (:func:`~spinimpact.io.atomic.atomic_path`).
+    (:func:`~spinimpact.io.atomic.atomic_path`); ``units(name)`` names each column's unit.
 
     Raises
     ------
@@ -253,7 +266,7 @@ def table_columns(
     if not target.absolute().parent.is_dir():
         raise ValueError(f"the directory of the output {str(target)!r} does not exist")
     with atomic_path(target) as tmp:
-        columns = TableColumns(tmp, fmt, metadata, regimes)
+        columns = TableColumns(tmp, fmt, metadata, regimes, units)
         try:
             yield columns
         finally:
@@ -261,18 +274,22 @@ def table_columns(
 
 
 def write_npy_metadata(
-    directory: str | os.PathLike[str], description: dict[str, Any], dtypes: dict[str, np.dtype]
+    directory: str | os.PathLike[str],
+    description: dict[str, Any],
+    dtypes: dict[str, np.dtype],
+    units: Callable[[str], str | None] | None = None,
 ) -> None:
     """Write ``metadata.json`` into a sweep's directory of ``.npy`` files (while it is
     built under its temporary name).
 
     It holds ``description`` (the regimes' names, ``regime.npy`` holding indices into
     them; the body; the law of a planar sweep) and, for each column, its file, dtype and
-    unit.
+    unit (``units(name)``, by default the package's vocabulary).
     """
+    units = units or unit_of
     columns = {
         name: {"file": f"{name}.npy", "dtype": str(dtype)}
-        | ({"unit": UNITS[name]} if name in UNITS else {})
+        | ({"unit": units(name)} if units(name) is not None else {})
         | ({"values": "index into regimes"} if name == "regime" else {})
         for name, dtype in dtypes.items()
     }

@@ -73,6 +73,7 @@ from ._runner import (
     estimate_sweep,
 )
 from ._sinks import npy_columns
+from ._units import unit_of
 
 __all__ = [
     "ALIASES",
@@ -206,6 +207,10 @@ class Sweep:
     def column_dtype(self, name: str) -> np.dtype:
         """How column ``name`` is stored in ``.npy`` files: ``int8`` regime codes, else float."""
         return np.dtype(np.int8 if name == "regime" else np.float64)
+
+    def unit(self, name: str) -> str | None:
+        """The SI unit of column ``name`` in the files (``None``: text or a flag)."""
+        return unit_of(name)
 
     def description(self) -> dict[str, Any]:
         """What a file of the sweep says about itself: the regimes' names (the ``regime``
@@ -378,10 +383,10 @@ def run_sweep(
     elif kind == "npy":
         sink = npy_columns(output, columns, sweep.size, dtypes)  # type: ignore[arg-type]
     else:
-        sink = table_columns(output, kind, sweep.metadata(), regimes)  # type: ignore[arg-type]
+        sink = table_columns(output, kind, sweep.metadata(), regimes, sweep.unit)  # type: ignore[arg-type]
     with sink as writer:
         if kind == "npy":
-            write_npy_metadata(npy_folder(writer), sweep.description(), dtypes)
+            write_npy_metadata(npy_folder(writer), sweep.description(), dtypes, sweep.unit)
         done = 0
         # no enumerate(): its reused tuple would keep the last chunk alive during the next
         for n, counts, hist, data in chunks_in_order(sweep.chunks, work, client, window):

@@ -20,6 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from ..core import REGIMES
+from ..core.planar import PLANAR_REGIMES
 from .body import PRESETS, Body
 from .impact import Impact, solve
 from .pair import PairImpact, solve_pair
@@ -121,6 +123,7 @@ PAPER = register(
         Impact,
         tangential=True,
         example={"vx": 3.0, "vy": -4.0, "omega": 10.0},
+        regimes=REGIMES,
     )
 )
 
@@ -218,6 +221,7 @@ PLANAR = register(
             "vy": -1.0,
             "omega": 0.0,
         },
+        regimes=PLANAR_REGIMES,
     )
 )
 
@@ -248,6 +252,7 @@ PENDULUM = register(
             "py": -0.1,
             "omega": -2.0,
         },
+        regimes=PLANAR_REGIMES,
     )
 )
 
@@ -300,6 +305,7 @@ SPHERE = register(
         tangential=True,
         may_be_nan=("topspin", "gyrospin"),
         example={"vx": 2.0, "vy": -3.0, "vz": 0.0, "wx": 0.0, "wy": 0.0, "wz": 30.0},
+        regimes=REGIMES,
     )
 )
 
@@ -364,5 +370,6 @@ PAIR = register(
             "normal_y": 0.0,
             "normal_z": 0.0,
         },
+        regimes=REGIMES,
     )
 )

@@ -166,6 +166,10 @@ class Problem:
     example : dict
         One valid impact (the inputs without defaults): documentation, and the probe that
         tells each result column's kind (number, text or flag) before a file is read.
+    regimes : tuple of str
+        The names the result's ``regime`` column takes under the rigid law (a tangential
+        law's are :data:`~spinimpact.core.compliance.COMPLIANT_REGIMES`): a sweep counts
+        the points in each and writes ``regime`` as indices into them.
     """
 
     name: str
@@ -180,6 +184,7 @@ class Problem:
     may_be_nan: tuple[str, ...] = ()
     echoes: Mapping[str, str] = field(default_factory=dict)
     example: Mapping[str, Any] = field(default_factory=dict)
+    regimes: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         names = [i.name for i in self.inputs]
