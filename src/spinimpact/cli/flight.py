@@ -9,6 +9,7 @@ two bounces. The names, units and signs of every option: ``docs/conventions.md``
 
 from __future__ import annotations
 
+import io
 import json
 import math
 from pathlib import Path
@@ -327,8 +328,18 @@ def _write(f: Any, o: dict) -> None:
         from ..viz.flight import animate_flight
 
         kind = Path(o["animate"]).suffix.lstrip(".").lower()
-        with atomic_path(o["animate"]) as tmp:
-            animate_flight(f, tmp, format=kind, fps=o["fps"], dpi=min(o["dpi"], 100))
+        dpi = min(o["dpi"], 100)
+        if kind == "gif":  # rendered before the file is opened: a stop ends it at once
+            image = io.BytesIO()
+            with progress() as bar:
+                task = bar.add_task(f"animating {o['animate']}", total=None)
+                done = lambda d, n: bar.update(task, completed=d, total=n)  # noqa: E731
+                animate_flight(f, image, format=kind, fps=o["fps"], dpi=dpi, progress=done)
+            with atomic_path(o["animate"]) as tmp:
+                tmp.write_bytes(image.getbuffer())
+        else:  # ffmpeg writes a file: the frames check for a stop as they are drawn
+            with atomic_path(o["animate"]) as tmp:
+                animate_flight(f, tmp, format=kind, fps=o["fps"], dpi=dpi)
     if not o["as_json"]:
         for path in (o["plot"], o["animate"]):
             if path is not None:

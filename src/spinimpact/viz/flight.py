@@ -11,8 +11,9 @@ here computes physics: every number is a field of the :class:`~spinimpact.Flight
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, BinaryIO
 
 import numpy as np
 
@@ -177,12 +178,16 @@ def _wall_line(ax, wall, zs: np.ndarray) -> None:
     ax.plot(ends[:, 0], ends[:, 1], color="0.3", lw=2.5, label="wall")
 
 
-def animate_flight(flight: Flight, target: str | Path, *, format: str | None = None,
-                   fps: int = 20, dpi: int = 80) -> None:  # fmt: skip
+def animate_flight(flight: Flight, target: str | Path | BinaryIO, *, format: str | None = None,
+                   fps: int = 20, dpi: int = 80,
+                   progress: Callable[[int, int], None] | None = None) -> None:  # fmt: skip
     """Write the ball moving along its path (side and top views), in real time, to
     ``target``: a GIF (Pillow) or an MP4 (Matplotlib's ffmpeg writer, where ffmpeg is
     installed). ``format`` (``gif`` or ``mp4``) defaults to the suffix of ``target``, so a
-    temporary file may be written under any name.
+    temporary file may be written under any name; a GIF may also be written to a binary
+    file object (``io.BytesIO``). ``progress(done, frames)`` is called after each frame.
+    A stop asked for on the command line (SIGINT, SIGTERM: :mod:`spinimpact.io._stop`)
+    ends the rendering between two frames.
 
     Raises
     ------
@@ -192,6 +197,8 @@ def animate_flight(flight: Flight, target: str | Path, *, format: str | None = N
         For an MP4 where the ffmpeg writer is not installed.
     """
     _one(flight)
+    if format is None and not isinstance(target, str | Path):
+        raise ValueError("give the format (gif) of an animation written to a file object")
     kind = (format or Path(target).suffix.lstrip(".")).lower()
     if f".{kind}" not in ANIMATIONS:
         raise ValueError(f"the animation must be a .gif or .mp4, got {str(target)!r}")
@@ -204,6 +211,8 @@ def animate_flight(flight: Flight, target: str | Path, *, format: str | None = N
         raise ValueError("this Flight has no recorded path (run flight(..., path=True))")
     from matplotlib import animation
     from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from ..io._stop import check as stop_check
 
     if kind == "mp4" and not animation.writers.is_available("ffmpeg"):
         raise ImportError("writing .mp4 needs ffmpeg, which is not installed: write a .gif")
@@ -218,9 +227,12 @@ def animate_flight(flight: Flight, target: str | Path, *, format: str | None = N
     label = side.text(0.99, 0.95, "", transform=side.transAxes, ha="right", va="top")
 
     def draw(i: int) -> tuple:
+        stop_check()  # a stop asked for (SIGINT, SIGTERM) ends the rendering between frames
         ball_side.set_data([xs[i]], [ys[i]])
         ball_top.set_data([xs[i]], [zs[i]])
         label.set_text(f"t = {clock[i]:.2f} s")
+        if progress is not None:
+            progress(i + 1, frames)
         return ball_side, ball_top, label
 
     if kind == "mp4":
