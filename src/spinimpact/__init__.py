@@ -26,6 +26,7 @@ from .model.compliance import (
 from .model.fit import FitResult, FitWarning, fit
 from .model.fit_data import MeasuredBounces
 from .model.fit_drops import fit_drops
+from .model.fit_problem import ProblemFit, fit_problem
 from .model.flight import flight, launch
 from .model.flight_result import Flight
 from .model.impact import History, Impact, Outcome, State, solve
@@ -57,6 +58,8 @@ __all__ = [
     "unregister",
     "fit",
     "fit_drops",
+    "fit_problem",
+    "ProblemFit",
     "MeasuredBounces",
     "FitResult",
     "FitWarning",

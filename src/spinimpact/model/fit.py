@@ -11,19 +11,30 @@ from __future__ import annotations
 
 import warnings
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .._validation import setting
 from .body import Body
-from .fit_data import MeasuredBounces
+from .fit_data import SIGMAS, MeasuredBounces
 from .fit_models import FitModel, make_model
-from .fit_profile import Problem, curvature, intervals, minimize, threshold
+from .fit_profile import Intervals, Problem, curvature, intervals, minimize, threshold
 from .fit_result import FitResult, FitWarning
 from .presets import Ball
 
-__all__ = ["fit", "FitResult", "FitWarning", "NoScatterError"]
+__all__ = [
+    "fit",
+    "FitResult",
+    "FitWarning",
+    "NoScatterError",
+    "Estimation",
+    "estimate",
+    "refuse_impossible",
+    "scatter",
+    "summary",
+]
 
 
 def _start(fm: FitModel, bounces: MeasuredBounces, given: Mapping[str, float]) -> np.ndarray:
@@ -82,29 +93,46 @@ NAMED_ROWS = 5
 def _impossible(bounces: MeasuredBounces) -> None:
     """Refuse measured normal rebounds no impact can give, beyond the measurement's noise:
     into the surface (``after_vy < 0``), or faster than the impact (``after_vy > -vy``)."""
-    speed, up = -bounces.vy, bounces.after_vy
-    sigma = bounces.sigma_after_vy
+    refuse_impossible(bounces.vy, bounces.after_vy, bounces.sigma_after_vy)
+
+
+def refuse_impossible(
+    before: np.ndarray,
+    up: np.ndarray,
+    sigma: np.ndarray | None,
+    *,
+    after_name: str = "after_vy",
+    before_name: str = "vy",
+) -> None:
+    """Refuse measured normal rebounds ``up`` (NaN: not measured) that no impact with the
+    normal approach velocities ``before`` (< 0) can give, beyond the noise: into the
+    surface (``up < 0``) or faster than the impact (``up > -before``), by more than
+    :data:`NOISE_SIGMAS` of ``sigma`` or, without sigmas, :data:`NOISE_FRACTION` of
+    ``-before``. The error names the rows (their indices) and values."""
+    speed = -np.asarray(before, dtype=float)
     if sigma is None:
         slack = NOISE_FRACTION * speed
-        allowance = (f"{100 * NOISE_FRACTION:g} % of the impact speed -vy without sigmas; "
-                     "give sigma_after_vy to judge by the measurement's own noise")  # fmt: skip
+        allowance = (f"{100 * NOISE_FRACTION:g} % of the impact speed -{before_name} without "
+                     f"sigmas; give sigma_{after_name} to judge by the measurement's own "
+                     "noise")  # fmt: skip
     else:
         slack = NOISE_SIGMAS * np.where(np.isnan(up), 0.0, sigma)
-        allowance = f"{NOISE_SIGMAS:g} sigma_after_vy"
+        allowance = f"{NOISE_SIGMAS:g} sigma_{after_name}"
     measured = ~np.isnan(up)
     into = measured & (np.where(measured, up, 0.0) < -slack)
     faster = measured & (np.where(measured, up, 0.0) > speed + slack)
     bad = np.flatnonzero(into | faster)
     if not bad.size:
         return
-    items = [f"after_vy = {up[i]:g} m/s at index {i} "
+    items = [f"{after_name} = {up[i]:g} m/s at index {i} "
              f"({'into the surface' if into[i] else 'faster than the impact'}, "
-             f"vy = {bounces.vy[i]:g} m/s)" for i in bad[:NAMED_ROWS]]  # fmt: skip
+             f"{before_name} = {-speed[i]:g} m/s)" for i in bad[:NAMED_ROWS]]  # fmt: skip
     if bad.size > NAMED_ROWS:
         items.append(f"and {bad.size - NAMED_ROWS} more")
     raise ValueError(
-        "impossible rebound(s): a bounce leaves the surface (after_vy >= 0) no faster than "
-        f"it came (after_vy <= -vy), within the noise ({allowance}); got " + "; ".join(items)
+        f"impossible rebound(s): a bounce leaves the surface ({after_name} >= 0) no faster "
+        f"than it came ({after_name} <= -{before_name}), within the noise ({allowance}); "
+        "got " + "; ".join(items)
     )
 
 
@@ -118,21 +146,65 @@ def _scatter(prob: Problem, chi2: float) -> float:
     """The variance ``s^2 = chi2/dof`` estimated from the scatter (1 with sigmas given);
     :class:`NoScatterError` where it is 0 to rounding (``s`` below ``1e-8`` of the
     measured values' size)."""
+    return scatter(prob, chi2, float(np.mean(-prob.bounces.vy)), SIGMAS)
+
+
+def scatter(prob: Problem, chi2: float, size: float, sigmas: Sequence[str]) -> float:
+    """:func:`_scatter` for any fit: ``size`` is a speed the measured values' scatter is
+    judged against (besides their own size, m/s), ``sigmas`` the names of the sigma
+    columns the error asks for."""
     if prob.sigma_given:
         return 1.0
     s2 = chi2 / prob.dof
-    size = max(float(np.sqrt(np.mean(np.square(prob.observed * prob.weight)))),
-               float(np.mean(-prob.bounces.vy)))  # fmt: skip
+    size = max(float(np.sqrt(np.mean(np.square(prob.observed * prob.weight)))), size)
     if np.sqrt(s2) <= 1e-8 * size:
-        n = prob.bounces.n_observations
+        n = int(prob.mask.sum())
         raise NoScatterError(
             f"the {n} measured values show no scatter about the fitted model (the standard "
             f"deviation estimated from them is {np.sqrt(s2):.3g} m/s, zero to rounding): no "
             "uncertainty can be estimated from them, and every interval would have zero "
-            "width; give the standard deviations of the measured rebound (sigma_after_vx, "
-            "sigma_after_vy, sigma_after_omega)"
+            f"width; give the standard deviations of the measured values ({', '.join(sigmas)})"
         )
     return s2
+
+
+@dataclass
+class Estimation:
+    """What :func:`estimate` found: the optimizer's result, the estimate of the free
+    parameters, the variance scale, the covariance, standard errors and intervals, and a
+    warning to give (``None`` when it converged)."""
+
+    best: Any
+    x: np.ndarray
+    s2: float
+    covariance: np.ndarray
+    standard_error: np.ndarray
+    intervals: Intervals
+    warning: str | None
+
+
+def estimate(prob: Problem, x0: np.ndarray, conf: float, scatter: Any) -> Estimation:
+    """Least squares from ``x0``, then the curvature and the profile intervals; where a
+    profile meets a lower ``chi2`` (several minima), start again from there (at most
+    twice). ``scatter(prob, chi2)`` gives the variance scale ``s^2`` (1 with sigmas) or
+    raises where it cannot be estimated. Shared by :func:`fit` and
+    :func:`spinimpact.fit_problem`, whatever model ``prob`` holds."""
+    best = minimize(prob, x0)
+    for attempt in range(3):
+        x = best.x
+        s2 = scatter(prob, prob.chi2(x))
+        cov, se = curvature(prob, x, s2)
+        ivals = intervals(prob, x, conf, se)
+        if ivals.better is None or attempt == 2:
+            break
+        best = minimize(prob, ivals.better)  # a profile met a lower chi2: start again there
+    warning = None
+    if not best.success:
+        warning = f"the fit did not converge: {best.message}"
+    elif ivals.better is not None:
+        text = "its profiles keep finding lower chi2 (several minima?); try other start values"
+        warning = f"the fit did not converge: {text}"
+    return Estimation(best, x, s2, cov, se, ivals, warning)
 
 
 def fit(
@@ -285,26 +357,19 @@ def fit(
     prob = Problem(fm, bounces, theta, free)
     if "mu" not in held and "mu" not in begin:
         prob.theta[fm.names.index("mu")] = prob.scan_mu()
-    best = minimize(prob, prob.theta[free])
-    for attempt in range(3):
-        x = best.x
-        s2 = _scatter(prob, prob.chi2(x))
-        cov, se = curvature(prob, x, s2)
-        ivals = intervals(prob, x, conf, se)
-        if ivals.better is None or attempt == 2:
-            break
-        best = minimize(prob, ivals.better)  # a profile met a lower chi2: start again there
-    if not best.success:
-        warnings.warn(f"the fit did not converge: {best.message}", FitWarning, stacklevel=2)
-    elif ivals.better is not None:
-        text = "its profiles keep finding lower chi2 (several minima?); try other start values"
-        warnings.warn(f"the fit did not converge: {text}", FitWarning, stacklevel=2)
-    return _result(prob, best, x, cov, se, ivals, conf, held)
+    est = estimate(prob, prob.theta[free], conf, _scatter)
+    if est.warning is not None:
+        warnings.warn(est.warning, FitWarning, stacklevel=2)
+    return _result(prob, est, conf, held)
 
 
-def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.ndarray,
-            ivals: Any, conf: float, held: dict[str, float]) -> FitResult:  # fmt: skip
-    fm, data = prob.model, prob.bounces
+def summary(prob: Problem, est: Estimation, conf: float,
+            sliding: Any = None) -> dict[str, Any]:  # fmt: skip
+    """The fields of a :class:`FitResult` that every fit computes alike from its least
+    squares: estimates, covariance and correlation, intervals, fitted values and their
+    band, residuals, ``chi2``, likelihood, AIC and BIC. ``sliding``: ``(theta, measured)
+    -> (sliding, sticking)`` rows, or ``None`` (no friction regimes: neither)."""
+    data, x, cov, se, ivals = prob.bounces, est.x, est.covariance, est.standard_error, est.intervals
     theta = prob.full(x)
     chi2 = prob.chi2(x)
     dof = prob.dof
@@ -313,15 +378,16 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
         corr = cov / np.outer(se, se)
     corr[np.isinf(se)[:, None] | np.isinf(se)[None, :]] = np.nan
     np.fill_diagonal(corr, 1.0)
-    fitted = fm.predict(theta, data)
+    fitted = prob.model.predict(theta, data)
     measured = data.measured
     obs = data.observed
     sigma = prob.sigma * np.sqrt(s2)
     sigma = np.where(measured, sigma, np.nan)
     resid = np.where(measured, obs - fitted, np.nan)
-    tangential = measured[:, 0] | measured[:, 2]
-    sliding, sticking = fm.contact(theta, data)
-    sliding, sticking = sliding & tangential, sticking & tangential
+    if sliding is None:
+        slid = stuck = np.zeros(len(obs), dtype=bool)
+    else:
+        slid, stuck = sliding(theta, measured)
     n = data.n_observations
     if prob.sigma_given:
         loglik = -0.5 * (chi2 + float(np.sum(np.log(2 * np.pi * prob.sigma[measured] ** 2))))
@@ -331,14 +397,11 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
         loglik += float(np.sum(np.log(1.0 / prob.sigma[measured])))  # the weights' Jacobian
         k = x.size + 1
     normalized = resid / sigma
-    preds = [fm.predict(prob.full(e), data) for e in ivals.ends]
+    preds = [prob.model.predict(prob.full(e), data) for e in ivals.ends]
     lows = np.min([fitted, *preds], axis=0)
     highs = np.max([fitted, *preds], axis=0)
-    body = {k: np.asarray(getattr(fm.body, k)).tolist() for k in ("radius", "gyration", "zeta")}
-    return FitResult(
-        model=fm.description,
-        body={"name": fm.body.name, **body},
-        names=tuple(np.array(fm.names)[prob.free].tolist()),
+    return dict(
+        names=tuple(np.array(prob.model.names)[prob.free].tolist()),
         estimate=x.copy(),
         standard_error=se,
         covariance=cov,
@@ -348,7 +411,6 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
         one_sided=ivals.one_sided,
         confidence=conf,
         threshold=threshold(conf, dof, prob.sigma_given),
-        fixed=held,
         observed=obs,
         fitted=fitted,
         fitted_low=lows,
@@ -356,12 +418,10 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
         residuals=resid,
         normalized_residuals=normalized,
         sigma=sigma,
-        incidence=np.stack([data.vx, data.vy, data.omega], axis=-1),
-        incidence_angle_deg=data.incidence_angle_deg,
-        sliding=sliding,
-        sticking=sticking,
-        n_sliding=int(sliding.sum()),
-        n_sticking=int(sticking.sum()),
+        sliding=slid,
+        sticking=stuck,
+        n_sliding=int(slid.sum()),
+        n_sticking=int(stuck.sum()),
         chi2=chi2 if prob.sigma_given else float(dof),  # chi2/s^2 = dof by construction
         dof=int(dof),
         reduced_chi2=chi2 / dof if prob.sigma_given else 1.0,
@@ -370,10 +430,29 @@ def _result(prob: Problem, best: Any, x: np.ndarray, cov: np.ndarray, se: np.nda
         log_likelihood=float(loglik),
         aic=float(2 * k - 2 * loglik),
         bic=float(k * np.log(n) - 2 * loglik),
-        n_bounces=len(data),
+        n_bounces=len(obs),
         n_observations=n,
-        converged=bool(best.success),
-        message=str(best.message),
+        converged=bool(est.best.success),
+        message=str(est.best.message),
         evaluations=prob.evaluations,
         profiles=ivals.profiles,
+    )
+
+
+def _result(prob: Problem, est: Estimation, conf: float, held: dict[str, float]) -> FitResult:
+    fm, data = prob.model, prob.bounces
+
+    def contact(theta: np.ndarray, measured: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        tangential = measured[:, 0] | measured[:, 2]
+        sliding, sticking = fm.contact(theta, data)
+        return sliding & tangential, sticking & tangential
+
+    body = {k: np.asarray(getattr(fm.body, k)).tolist() for k in ("radius", "gyration", "zeta")}
+    return FitResult(
+        model=fm.description,
+        body={"name": fm.body.name, **body},
+        fixed=held,
+        incidence=np.stack([data.vx, data.vy, data.omega], axis=-1),
+        incidence_angle_deg=data.incidence_angle_deg,
+        **summary(prob, est, conf, contact),
     )

@@ -24,7 +24,15 @@ __all__ = ["Problem", "Intervals", "minimize", "jacobian", "curvature", "interva
 
 
 class Problem:
-    """Weighted residuals of a model on measured bounces, over the free parameters."""
+    """Weighted residuals of a model on measured bounces, over the free parameters.
+
+    ``model`` is a :class:`~spinimpact.model.fit_models.FitModel` or any object with the
+    same few members (``parameters`` with ``low``/``high``, ``names``, ``values(theta)``,
+    ``predict(theta, bounces) -> (n, q)`` and ``scale() -> (q,)``), and ``bounces`` one
+    with ``measured``, ``observed`` and ``sigma`` arrays of shape ``(n, q)``: the
+    paper's 2D fit (:func:`spinimpact.fit`) and the fit of any registered problem
+    (:func:`spinimpact.fit_problem`) share every step below.
+    """
 
     def __init__(
         self, model: FitModel, bounces: MeasuredBounces, theta: np.ndarray, free: np.ndarray

@@ -208,11 +208,15 @@ class FitResult(Result):
         out["p_value"] = self.p_value
         return out
 
+    def _quantities(self) -> tuple[str, ...]:
+        """The measured quantities, in the order of the ``(n, q)`` arrays' columns."""
+        return QUANTITIES
+
     def columns(self) -> dict[str, np.ndarray]:
         """One row per bounce: incidence angle, measured, fitted, band and residual of
         each quantity, and whether the bounce slid."""
         out: dict[str, np.ndarray] = {"incidence_angle_deg": self.incidence_angle_deg}
-        for j, q in enumerate(QUANTITIES):
+        for j, q in enumerate(self._quantities()):
             for prefix, arr in (("observed", self.observed), ("fitted", self.fitted),
                                 ("fitted_low", self.fitted_low),
                                 ("fitted_high", self.fitted_high),
@@ -221,14 +225,18 @@ class FitResult(Result):
         out["sliding"] = self.sliding
         return out
 
-    @classmethod
-    def column_names(cls) -> tuple[str, ...]:
-        """Names of :meth:`columns`, in order."""
+    @staticmethod
+    def _column_names(quantities: tuple[str, ...]) -> tuple[str, ...]:
         names = ["incidence_angle_deg"]
-        for q in QUANTITIES:
+        for q in quantities:
             names += [f"{p}_{q}" for p in ("observed", "fitted", "fitted_low", "fitted_high",
                                             "residual")]  # fmt: skip
         return (*names, "sliding")
+
+    @classmethod
+    def column_names(cls) -> tuple[str, ...]:
+        """Names of :meth:`columns`, in order."""
+        return cls._column_names(QUANTITIES)
 
     def __repr__(self) -> str:
         parts = "; ".join(str(self[n]) for n in self.names)
