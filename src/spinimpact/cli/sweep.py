@@ -26,7 +26,8 @@ import click
 from .._long import ANNOUNCE_SECONDS, REFUSE_SECONDS
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
-from ._compliance import sweep_class, tangential_options
+from ._compliance import sweep_class, tangential_law, tangential_options
+from ._problem_sweep import ProblemSweepCommand, problem_sweep
 from ._sphere_sweep import SPHERE_ONLY, sphere_options, sphere_sweep
 from ._vocabulary import help as _help
 from .planar import orientation_options
@@ -184,7 +185,7 @@ def _dask_client(address: str | None) -> Any:
     return Client(address, timeout=30)
 
 
-@click.command("sweep")
+@click.command("sweep", cls=ProblemSweepCommand)
 @body_options
 @click.option(
     "--planar",
@@ -291,6 +292,18 @@ def _dask_client(address: str | None) -> Any:
 @tangential_options
 @click.option("--dask", "dask_address", default=None, help=_help("dask"))
 @click.option(
+    "--problem",
+    default=None,
+    metavar="NAME",
+    help=_help(
+        "problem",
+        "Sweep any registered problem (spinimpact problems lists them), e.g. --problem pair: "
+        "its inputs become the options (spinimpact sweep --problem pair --help), each a "
+        "number, START:STOP:NUM or uniform:LOW:HIGH; inputs not given take the problem's "
+        "defaults; --fields names its result columns (default the after_* ones and regime).",
+    ),
+)
+@click.option(
     "--dry-run",
     is_flag=True,
     help=_help(
@@ -322,15 +335,21 @@ def sweep_command(
     regime fractions (always), a histogram, and/or the fields written to files.
 
     One of the paper's bodies (--body, --gyration), or with --planar one planar body or
-    pendulum under one --law, e.g. --planar rod --length 1 --orientation-deg 45 --law newton."""
+    pendulum under one --law, e.g. --planar rod --length 1 --orientation-deg 45 --law newton.
+    With --problem NAME, any registered problem (two spheres: --problem pair), its inputs as
+    options: spinimpact sweep --problem pair --help lists them."""
     from ..io.sweep import estimate_sweep, parse_axis, run_sweep
 
     make = sweep_class(o)  # Sweep, or a CompliantSweep of the --tangential law
-    if o["sphere"] is None:
+    problem = o.get("problem")  # with --problem, the options are the problem's inputs
+    if problem is None and o["sphere"] is None:
         for name in SPHERE_ONLY:
             if _given(ctx, name):
                 raise click.UsageError(f"{_flag(name)} needs --sphere (a sphere's sweep)")
-    if o["sphere"] is not None:
+    if problem is not None:
+        sweep = problem_sweep(ctx, o, samples, seed, chunk_size, tangential_law(o))
+        fields = fields if _given(ctx, "fields") else ",".join(sweep.default_fields)
+    elif o["sphere"] is not None:
         sweep, default_fields = sphere_sweep(ctx, o, samples, seed, chunk_size)
         fields = default_fields or fields
     elif o["planar"] is None:
@@ -391,8 +410,9 @@ def sweep_command(
     finally:
         if client is not None:
             client.close()
-    about = f" ({body.name}, {o['law']} law)" if o["planar"] else ""
-    about = f" ({sweep.body.name})" if o["sphere"] else about
+    about = f" ({body.name}, {o['law']} law)" if o.get("planar") else ""
+    about = f" ({sweep.body.name})" if o.get("sphere") else about
+    about = f" (problem {o['problem']})" if o.get("problem") else about
     click.echo(f"{result.points:,} points{about}")
     width = max(map(len, result.regimes)) + 1
     for name, fraction in result.regime_fractions.items():

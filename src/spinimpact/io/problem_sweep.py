@@ -235,12 +235,13 @@ class ProblemSweep(Sweep):
     @property
     def regimes(self) -> tuple[str, ...]:  # type: ignore[override]
         """The regimes' names: the compliance laws' under a tangential law, else those the
-        problem declares (every regime the package names if it declares none)."""
+        problem declares (if it declares none, its example's and every regime the package
+        names)."""
         if "regime" not in self._kinds:
             return ("all",)
         if self.tangential is not None:
             return COMPLIANT_REGIMES
-        return tuple(getattr(self.problem, "regimes", ())) or _ALL_REGIMES
+        return tuple(getattr(self.problem, "regimes", ())) or _undeclared(self.problem)
 
     @property
     def _kinds(self) -> dict[str, str]:
@@ -391,6 +392,14 @@ class ProblemSweep(Sweep):
                 f"{name} is {float(value[i])!r} at point {k * self.chunk_size + i:,} of the "
                 f"sweep ({at or 'its only point'}): not a finite number"
             )
+
+
+@functools.cache
+def _undeclared(declared: Problem) -> tuple[str, ...]:
+    """The regimes of a problem that declares none: those of its example, then every regime
+    the package's laws name."""
+    found = declared.solve(**declared.example).columns().get("regime", ())
+    return tuple(dict.fromkeys((*map(str, np.unique(np.asarray(found))), *_ALL_REGIMES)))
 
 
 @functools.cache
