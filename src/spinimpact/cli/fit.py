@@ -8,7 +8,6 @@ import json
 import math
 import re
 import warnings
-from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -17,7 +16,6 @@ import numpy as np
 
 from ..model.body import PRESETS, Body
 from ..model.fit_models import TANGENTIAL
-from ..model.presets import BALLS
 from ._common import image_format, jsonable
 from ._vocabulary import deprecated
 from ._vocabulary import help as _help
@@ -101,18 +99,11 @@ def _rows(path: str, lines: np.ndarray, exc: ValueError) -> ValueError:
     """The library's error about the i-th data row, naming the row by its line in the file
     (as the errors about a cell do) instead of by its index among the data rows."""
     text = str(exc)
-    found = list(_INDEX.finditer(text))
-    if not found:
+    found = _INDEX.search(text)
+    if found is None:
         return exc
-
-    def line(m: re.Match[str]) -> int:
-        return int(lines[int(m.group(1) or m.group(2))])
-
-    if len(found) == 1:
-        at = found[0]
-        return ValueError(f"{path}: row {line(at)}: {text[: at.start()]}{text[at.end() :]}")
-    # several rows named in one message (impossible rebounds): each by its line
-    return ValueError(f"{path}: " + _INDEX.sub(lambda m: f" at row {line(m)}", text))
+    line = int(lines[int(found.group(1) or found.group(2))])
+    return ValueError(f"{path}: row {line}: {text[: found.start()]}{text[found.end() :]}")
 
 
 def _knots(text: str) -> str | list[float]:
@@ -180,14 +171,6 @@ def _print(res: Any) -> None:
     for name, value in res.fixed.items():
         table.add_row(Text(name), f"{value:.5g}", "fixed", "")
     console.print(table)
-    if res.body is not None:  # drop tests have none: there the body plays no part
-        b = res.body
-        about = f"body: {b['name']}, "
-        if b["radius"] is None:
-            about += f"zeta = {b['zeta']:.4g} (its radius plays no part without spin)"
-        else:
-            about += f"R = {b['radius']:.4g} m, rho = {b['gyration']:.4g} m, zeta = {b['zeta']:.4g}"
-        console.print(Text(about))
     sig = "sigmas given" if res.sigma_given else f"one sigma estimated: {res.scale:.3g} m/s"
     from ..model.fit_drops import DropFit
 
@@ -230,8 +213,6 @@ def _print(res: Any) -> None:
 @click.option("--fix", multiple=True, metavar="NAME=VALUE",
               help=_help("fix", "E.g. --fix kappa=0.98 (repeatable)."))  # fmt: skip
 @click.option("--free-gyration", is_flag=True, help=_help("free-gyration"))
-@click.option("--ball", type=click.Choice(list(BALLS)), default=None,
-              help=_help("ball", "Gives the radius and gyration: no --radius."))  # fmt: skip
 @click.option("--body", type=click.Choice(list(PRESETS)), default=None,
               help=_help("body", "With --radius, which may be left out when no spin "
                                "is given or measured."))  # fmt: skip
@@ -262,9 +243,7 @@ def fit_command(bounces: str, **o: Any) -> None:
       after_vx, after_vy, after_omega   measured rebound, at least one
       sigma_after_vx, sigma_after_vy, sigma_after_omega   standard deviations
                                     (all three or none; none: one sigma estimated)
-    The body is required (no shape is assumed: it decides how a bounce changes the
-    spin): --ball, --body with --radius, or --radius with --gyration. Estimates by
-    weighted least squares; intervals from the profile likelihood.
+    Estimates by weighted least squares; intervals from the profile likelihood.
     """
     for option in ("plot", "corner"):
         if o[option] is not None:
@@ -273,8 +252,6 @@ def fit_command(bounces: str, **o: Any) -> None:
         raise click.BadParameter(f"{bounces!r} is not a file", param_hint="BOUNCES")
     if o["problem"] is not None:
         return _fit_problem_file(bounces, o)
-    if not o["drops"]:  # drops without spin need no body
-        _one_body(o)
     restitution = _knots(o["restitution"])
     o["restitution"] = restitution
     fixed = _fixed(o["fix"])
@@ -301,39 +278,18 @@ def _bounces(columns: dict[str, np.ndarray], o: dict[str, Any], fixed: dict[str,
 
     data = MeasuredBounces.from_columns(columns)
     spin = np.any(data.omega != 0) or np.any(data.measured[:, 2])
-    sized = o["ball"] is not None or o["radius"] is not None
-    if not sized and spin:
-        raise click.UsageError("--radius is needed: the file gives or measures spin")
-    if o["ball"] is not None:
-        body = BALLS[o["ball"]].body
-    elif o["gyration"] is not None:
+    if o["radius"] is None:
+        if spin:
+            raise click.UsageError("--radius is needed: the file gives or measures spin")
+        o["radius"] = 1.0  # without spin the radius plays no part
+    if o["gyration"] is not None:
+        if o["body"] is not None:
+            raise click.UsageError("give either --body or --gyration, not both")
         body = Body(mass=1.0, radius=o["radius"], gyration=o["gyration"])
-    else:  # the mass plays no part, nor the radius without spin
-        body = Body.preset(o["body"], mass=1.0, radius=o["radius"] if sized else 1.0)
-    res = fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
-              free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
-    if not sized:  # say so, rather than record a radius nobody gave
-        res = replace(res, body={**res.body, "radius": None, "gyration": None})
-    return res
-
-
-def _one_body(o: dict[str, Any]) -> None:
-    """Exactly one of ``--ball``, ``--body``, ``--gyration``, with ``--radius`` where it
-    needs one: no body is assumed."""
-    given = [f"--{k}" for k in ("ball", "body", "gyration") if o[k] is not None]
-    if not given:
-        raise click.UsageError(
-            "a body is needed (its shape decides how a bounce changes the spin): give --ball "
-            f"({', '.join(BALLS)}), --body ({', '.join(PRESETS)}) with --radius, or "
-            "--radius with --gyration for another body"
-        )
-    if len(given) > 1:
-        raise click.UsageError(f"give one of --ball, --body, --gyration, not {' and '.join(given)}")
-    if o["ball"] is not None and o["radius"] is not None:
-        raise click.UsageError("--ball gives the radius: leave out --radius, or give --body or "
-                               "--gyration with it")  # fmt: skip
-    if o["gyration"] is not None and o["radius"] is None:
-        raise click.UsageError("--gyration needs --radius: zeta = 1 + R^2/rho^2 depends on both")
+    else:
+        body = Body.preset(o["body"] or "solid-sphere", mass=1.0, radius=o["radius"])
+    return fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
+               free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
 
 
 def _write(res: Any, o: dict[str, Any]) -> None:
