@@ -111,7 +111,7 @@ def test_map_help_says_what_the_options_do():
         "the mass changes nothing",
         "only through zeta",
         "never more than a panel spans pixels at --dpi",
-        "pixels per inch",
+        "dots per inch",
     ):
         assert needle in text, needle
 

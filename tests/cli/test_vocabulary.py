@@ -4,6 +4,7 @@ unit, from the table in :mod:`spinimpact.cli._vocabulary`; old names are hidden 
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 
@@ -169,3 +170,60 @@ def test_an_old_name_with_its_new_one_is_refused():
     )
     assert result.exit_code == 2
     assert "give --spin-rpm or its old name --rpm, not both" in result.output
+
+
+def _json(capsys, line: str) -> dict:
+    out, err = _run(capsys, line + " --json")
+    assert err == ""
+    return json.loads(out)
+
+
+def test_sphere_presets_are_their_numbers(capsys):
+    from spinimpact import BALLS, GROUNDS
+
+    b, g = BALLS["tennis"], GROUNDS["clay"]
+    person = "sphere --speed 20 --incidence-from-surface-deg 16 --spin-rpm 2000 --spin-axis topspin"
+    preset = _json(capsys, f"{person} --ball tennis --surface clay")
+    plain = _json(
+        capsys,
+        f"{person} --mass {b.mass!r} --radius {b.radius!r} --gyration {b.gyration!r} "
+        f"--mu {g.mu!r} --kappa {g.kappa!r}",
+    )
+    assert preset["after"] == plain["after"]
+    assert preset["after"] != _json(capsys, person)["after"]  # the default 1 kg ball differs
+    mu = _json(capsys, f"{person} --ball tennis --surface clay --mu 0.1")
+    assert mu["mu"] == 0.1 and mu["kappa"] == g.kappa  # a typed mu overrides the preset's
+
+
+def test_speed_units_convert_once(capsys):
+    base = "sphere --incidence-from-surface-deg 30 --heading-deg 0"
+    si = _json(capsys, f"{base} --speed 20")
+    assert _json(capsys, f"{base} --speed 72 --speed-unit km/h")["before"] == si["before"]
+    mph = _json(capsys, f"{base} --speed 10 --speed-unit mph")
+    assert mph["before"]["vx"] == pytest.approx(10 * 0.44704 * math.cos(math.radians(30)))
+
+
+def test_a_combined_spin_axis_is_the_halfway_vector(capsys):
+    base = "sphere --speed 10 --incidence-from-surface-deg 30"
+    got = _json(capsys, f"{base} --spin-rpm 600 --spin-axis topspin+sidespin")["before"]
+    w = 600 * 2 * math.pi / 60 * math.sqrt(0.5)  # topspin along +x is -z, sidespin +y
+    assert (got["wx"], got["wy"], got["wz"]) == pytest.approx((0.0, w, -w), abs=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["sphere", "--ball", "tennis", "--mass", "2"], "give either --ball or --mass, not both"),
+        (["sphere", "--speed-unit", "mph"], "--speed-unit applies to --speed"),
+        (["sphere", "--spin-rpm", "1", "--spin-axis", "topspin+backspin"], "has no direction"),
+        (["flight", "--spin", "0,0,-9", "--spin-rpm", "4"], "give either --spin or --spin-rpm"),
+    ],
+)
+def test_vocabulary_refusals_are_one_line(capsys, args, message):
+    with pytest.raises(SystemExit) as stop:
+        main(args)
+    assert stop.value.code == 2
+    out = capsys.readouterr()
+    assert out.out == ""
+    assert out.err.startswith("spinimpact: error: ") and out.err.count("\n") == 1, out.err
+    assert message in out.err

@@ -135,7 +135,7 @@ def test_a_ball_that_settles_slides_and_rolls_to_rest_where_friction_says():
         (dict(speed=[1.0, -2.0], angle=0.0), ValueError, r"first offending index 1"),
         (dict(speed=10.0, angle=0.0, spin_rpm=100, spin_axis=[0, 0, 0]), ValueError,
          "length of spin_axis"),
-        (dict(speed=10.0, angle=0.0, spin_axis="wobble"), ValueError, "spin_axis must be one"),
+        (dict(speed=10.0, angle=0.0, spin_axis="wobble"), ValueError, "spin_axis must be topspin"),
         (dict(speed=10.0, angle=0.0, height=0.01), ValueError, "start on or above the ground"),
         (dict(speed=10.0, angle=95.0), ValueError, "angle must be in"),
         (dict(speed="fast", angle=0.0), TypeError, "speed must be a real number"),
