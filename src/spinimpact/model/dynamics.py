@@ -15,7 +15,7 @@ import numpy as np
 from .. import core
 from .._validation import SMALLEST, scalar
 from ..core import contact as kernels
-from .body import Body
+from .body import Body, as_body
 from .contact import ContactLaw, _tolerance
 from .impact import Impact, State, solve
 from .result import Result, freeze
@@ -185,6 +185,7 @@ def simulate(
     >>> bool(abs(sim.after.vx - rigid.after.vx) < 1e-8)
     True
     """
+    body = as_body(body)
     if tangential is not None:
         from .mindlin import simulate_tangential
 
@@ -192,8 +193,6 @@ def simulate(
                                    tangential=tangential, rtol=rtol)  # fmt: skip
     if not isinstance(contact, ContactLaw):
         raise TypeError(f"contact must be a spinimpact contact law, got {type(contact).__name__}")
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     m = scalar("mass", body.mass, why=_ONE)
     r = scalar("radius", body.radius, why=_ONE)
     j = scalar("inertia", body.inertia, why=_ONE)
