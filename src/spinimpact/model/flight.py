@@ -38,6 +38,7 @@ from .presets import ball as as_ball
 from .presets import ground as as_ground
 from .result import freeze
 from .sphere3d import _state, _vector
+from .spin_axis import combine_axes, parse_spin_axis
 
 __all__ = ["flight", "launch", "AIR_DENSITY", "GRAVITY", "RPM"]
 
@@ -47,7 +48,6 @@ AIR_DENSITY = 1.225
 GRAVITY = 9.80665
 #: rad/s in one revolution per minute.
 RPM = 2.0 * np.pi / 60.0
-_AXES = ("topspin", "backspin", "sidespin")
 
 
 def launch(speed: Any, angle: Any, direction: Any = 0.0, spin_rpm: Any = 0.0,
@@ -65,7 +65,9 @@ def launch(speed: Any, angle: Any, direction: Any = 0.0, spin_rpm: Any = 0.0,
     spin_rpm : float or array_like
         Revolutions per minute about ``spin_axis`` (a negative rate turns the other way).
     spin_axis : str or array_like
-        ``topspin``, ``backspin``, ``sidespin`` or a vector (any length > 0).
+        ``topspin``, ``backspin``, ``sidespin``, a combination of them
+        (``topspin+sidespin``: halfway; ``topspin:0.8+sidespin:0.2``: weighted; see
+        :mod:`spinimpact.model.spin_axis`) or a vector (any length > 0).
 
     Returns
     -------
@@ -90,14 +92,11 @@ def launch(speed: Any, angle: Any, direction: Any = 0.0, spin_rpm: Any = 0.0,
     up = np.array([0.0, 1.0, 0.0])
     velocity = s[..., None] * (np.cos(a)[..., None] * heading + np.sin(a)[..., None] * up)
     if isinstance(spin_axis, str):
-        name = spin_axis.strip().lower()
-        if name not in _AXES:
-            raise ValueError(f"spin_axis must be one of {', '.join(_AXES)} or a vector; "
-                             f"got {spin_axis!r}")  # fmt: skip
-        if name == "sidespin":
-            axis = np.broadcast_to(up, heading.shape)
-        else:
-            axis = np.cross(up, heading) * (1.0 if name == "topspin" else -1.0)
+        parts = parse_spin_axis(spin_axis)
+        top = np.cross(up, heading)
+        named = {"topspin": top, "backspin": top * -1.0,
+                 "sidespin": np.broadcast_to(up, heading.shape)}  # fmt: skip
+        axis = combine_axes(parts, named)
     else:
         axis = vector3("spin_axis", spin_axis)
         try:
