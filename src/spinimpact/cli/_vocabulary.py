@@ -139,7 +139,7 @@ TERMS: dict[str, Term] = {
     ),
     "chunk-size": Term("Rows per chunk"),
     "histogram": Term("Histogram FIELD:LOW:HIGH:BINS, accumulated on the fly"),
-    "dask": Term("Dask scheduler to run the chunks on"),
+    "dask": Term("Solve the chunks on the Dask scheduler at ADDRESS ([dask] extra)"),
     "dry-run": Term("Print the estimate and stop"),
     "force": Term("Run even what is estimated to take over an hour"),
     "planar": Term("Sweep a planar body of this kind instead"),
