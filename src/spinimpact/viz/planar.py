@@ -24,6 +24,7 @@ import numpy as np
 from ..core.planar import LAWS, PLANAR_REGIMES
 from ..model.planar import PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
+from ._marks import round_ticks, same_points
 from .tables import number
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -66,35 +67,6 @@ def _dot(ax: Any, x: float, y: float, fmt: str, label: str, **style: Any) -> Non
     ax.plot([x], [y], fmt, label=label, **{"ms": 7, "mec": "k", "mew": 0.6, "zorder": 5, **style})
 
 
-def _same_points(events: list, tol: float) -> list[list]:
-    """``events`` (tuples starting with their ``tau``) grouped where their ``tau`` agree
-    within ``tol``, each group in the given order: one marker for each group."""
-    groups: list[list] = []
-    for event in events:
-        for group in groups:
-            if abs(group[0][0] - event[0]) <= tol:
-                group.append(event)
-                break
-        else:
-            groups.append([event])
-    return groups
-
-
-def _round_ticks(low: float, high: float) -> list[float]:
-    """Round ticks for a bar from ``low < 0`` to ``high > 0`` with 0 in its middle: each
-    half gets its own round step (1, 2, 2.5 or 5 times a power of ten), the ticks
-    inside the bar only."""
-    from matplotlib.ticker import MaxNLocator
-
-    def half(a: float, b: float, bins: int) -> np.ndarray:
-        ticks = MaxNLocator(nbins=bins, steps=[1, 2, 2.5, 5, 10]).tick_values(a, b)
-        return ticks[(ticks >= a) & (ticks <= b)]
-
-    below = half(low, 0.0, 4) if low < 0 else np.zeros(1)
-    above = half(0.0, high, 2) if high > 0 else np.zeros(1)
-    return sorted({float(t) for t in (*below, *above)})
-
-
 def _title(imp: PlanarImpact) -> str:
     return (
         f"{imp.body.name}, $\\mu = {float(imp.mu):g}$, $\\kappa = {float(imp.kappa):g}$, "
@@ -121,9 +93,8 @@ def plot_routh_planar(imp: PlanarImpact, n: int = 401) -> Figure:
         that bring the contact's normal velocity to zero, ``W_tn f + W_nn tau = -v^-``;
         the sticking line, those that bring its slip to zero, ``W_tt f + W_tn tau = -u^-``;
         the path of the impulse, ending at ``(tau_1, f_1)``; markers at ``tau_0``,
-        ``tau_*`` (when finite; a cross where the slip stops and reverses) and ``tau_1``,
-        one marker named for each where they coincide (a pendulum's slip reverses at
-        ``tau_0 = tau_*``). The legend sits outside the axes.
+        ``tau_*`` (when finite; a cross if the slip reverses) and ``tau_1``, one named for
+        each where they coincide. The legend sits outside the axes.
 
     Notes
     -----
@@ -170,26 +141,21 @@ def plot_routh_planar(imp: PlanarImpact, n: int = 401) -> Figure:
         ax.axline(tuple(foot), tuple(foot + [-nf, nt]), color=color, lw=lw, ls=ls, label=label)
     ax.plot(h.tau, f, color="C3", lw=2.4, label=r"impulse path $(\tau, f)$", zorder=3)
 
-    def at(tau: float) -> float:
-        return float(np.interp(tau, h.tau, f))
-
-    f1 = float(imp.tangential_impulse)
-    reverses = imp.regime.startswith("reverse")
+    f1, reverses = float(imp.tangential_impulse), imp.regime.startswith("reverse")
     ring = {"mfc": "none", "mec": "C0", "ms": 12, "mew": 1.8, "zorder": 6}
     # (tau, symbol, what happens, marker, style), latest first: one marker per point
     events = [(t1, r"\tau_1", f"end, $f_1 = {f1:.4g}$ N s", "o", {"color": "k"}),
               (t0, r"\tau_0", "end of compression", "s", ring)]  # fmt: skip
     if math.isfinite(ts) and ts <= t1:
-        what = "slip stops and reverses" if reverses else "slip stops"
         mark = ("X", {"color": "C3", "ms": 14}) if reverses else ("D", {"color": "C2"})
-        events.insert(1, (ts, r"\tau_*", what, *mark))
-    for group in _same_points(events, 1e-9 * t1):
+        events.insert(1, (ts, r"\tau_*", "slip stops" + " and reverses" * reverses, *mark))
+    for group in same_points(events, 1e-9 * t1):
         tau = group[0][0]
         names = " = ".join(e[1] for e in reversed(group))
         whats = ", ".join(e[2] for e in reversed(group))
         _, _, _, marker, style = max(group, key=lambda e: e[3] == "X")  # a reversal shows
-        _dot(ax, tau, f1 if tau == t1 else at(tau), marker,
-             rf"${names} = {tau:.4g}$ N s: {whats}", **style)  # fmt: skip
+        y = float(np.interp(tau, h.tau, f))  # f1 at tau1: the path ends there exactly
+        _dot(ax, tau, y, marker, rf"${names} = {tau:.4g}$ N s: {whats}", **style)
     ax.set_xlabel(r"normal impulse $\tau$ (N s)")
     ax.set_ylabel(r"tangential impulse $f$ (N s)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize="small")
@@ -228,9 +194,8 @@ def plot_laws(
     -------
     matplotlib.figure.Figure
         The contact's normal velocity ``v`` and the kinetic energy ``E`` over ``tau``,
-        each law's end ``tau_1`` marked (one marker, named for each, where ends coincide),
-        the legend beside the panels; below, a table of each law's rebound, its three
-        restitution coefficients and its energy change.
+        each law's end ``tau_1`` marked (one marker where ends coincide); below, a table
+        of each law's rebound, its three restitution coefficients and its energy change.
 
     Notes
     -----
@@ -246,7 +211,9 @@ def plot_laws(
     grid = fig.add_gridspec(2, 2, height_ratios=[3, 2])
     axes = fig.add_subplot(grid[0, 0]), fig.add_subplot(grid[0, 1])
     # laws whose ends coincide share one marker (the first law's style), named for all
-    ends = _same_points([(float(i.tau1), law) for law, i in imps.items()], 1e-12 * float(last.tau1))
+    groups = same_points([(float(i.tau1), k) for k, i in imps.items()], 1e-12 * float(last.tau1))
+    ends = {g[0][1]: " = ".join(LAW_NAMES[x] for _, x in g) if len(g) < 3 else "all three laws"
+            for g in groups}  # fmt: skip
     panels = (
         (h.normal_velocity, "normal_velocity_after", r"contact normal velocity $v$ (m/s)"),
         (h.kinetic_energy, "kinetic_energy_after", r"kinetic energy $E$ (J)"),
@@ -258,20 +225,16 @@ def plot_laws(
         ax.axvline(t0, color="0.55", ls=":", lw=1, label=name, zorder=0)
         if 0 < ts < float(last.tau1) and ts != t0:
             ax.axvline(ts, color="0.55", ls="--", lw=1, zorder=0, label=r"$\tau_*$ (slip stops)")
-        for group in ends:
-            law = group[0][1]
+        for law, names in ends.items():
             color, marker = _LAW_STYLE[law]
             end = (float(imps[law].tau1), float(getattr(imps[law], field)))
-            names = " = ".join(LAW_NAMES[law] for _, law in group)
-            names = "all three laws" if len(group) == len(LAWS) else names
             _dot(ax, *end, marker, rf"{names}: $\tau_1$", color=color, ms=9)
         ax.set_xlabel(r"normal impulse $\tau$ (N s)")
         ax.set_ylabel(label)
     axes[0].axhline(0, color="0.8", lw=0.8, zorder=0)
     e0 = float(last.kinetic_energy_before)
     axes[1].axhline(e0, color="0.55", ls="--", lw=1, label=r"$E^-$ (before)", zorder=0)
-    axes[1].legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
-                   fontsize="small")  # fmt: skip
+    axes[1].legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize="small")
     rows = {
         r"$\tau_1$ (N s)": lambda i: i.tau1,
         r"$v_x^+$ (m/s)": lambda i: i.after.vx,
@@ -408,7 +371,7 @@ def plot_planar_map(
     im = ex.imshow(gain, cmap=cmap2, norm=norm, **style)
     bar = fig.colorbar(im, ax=ex, label=r"$(E^+ - E^-)/E^-$ under Newton's law")
     if top > 0:  # 0 sits mid-bar: round ticks on each side, spaced for its own half
-        bar.set_ticks(_round_ticks(norm.vmin, top))
+        bar.set_ticks(round_ticks(norm.vmin, top))
     created = np.asarray(newton.creates_energy)
     if created.any():
         mask = created.astype(float)
