@@ -1,6 +1,6 @@
 """``spinimpact sphere`` and ``spinimpact pair``: a spinning sphere on a (moving, tilted)
-plane in 3D, and two spheres colliding; ``--batch`` solves a file
-(:func:`spinimpact.io.sphere_batch.run_sphere_batch`).
+plane in 3D, and two spheres colliding; ``spinimpact batch`` solves files of them (the
+hidden, deprecated ``--batch`` still runs it and says so).
 
 A person's inputs are converted once, here: ``--speed`` (in ``--speed-unit``) with
 ``--incidence-from-surface-deg`` (below the surface) and ``--heading-deg`` (the heading
@@ -206,6 +206,10 @@ def _check_targets(o: dict) -> None:
     """Check ``--plot`` and ``--html`` before anything is solved or printed."""
     if o["output"] is not None:
         raise click.UsageError("--output goes with --batch (the file a batch run writes)")
+    for name, default in (("on_error", "stop"), ("chunk_size", 100_000)):
+        if o[name] != default:
+            option = "--" + name.replace("_", "-")
+            raise click.UsageError(f"{option} goes with a file of impacts: spinimpact batch")
     plot, html_path = o["plot"], o["html_path"]
     _ = plot is None or image_format(plot, "--plot")
     if html_path is not None and Path(html_path).suffix.lower() not in (".html", ".htm"):
@@ -314,13 +318,12 @@ _common_options = _options(
     click.option("--html", "html_path", default=None, help=_help("html", "(.html)")),
     click.option("--dpi", type=click.IntRange(50, 600), default=110, show_default=True,
                  help=_help("dpi")),
-    click.option("--batch", default=None, type=click.Path(dir_okay=False),
-                 help=_help("batch", "Columns above.")),
-    click.option("--output", default=None, help=_help("output", "With --batch (.csv, .parquet).")),
+    # Deprecated: spinimpact batch solves files of spheres and pairs (hidden; a run says so)
+    click.option("--batch", default=None, type=click.Path(dir_okay=False), hidden=True),
+    click.option("--output", default=None, hidden=True),
     click.option("--on-error", type=click.Choice(["stop", "skip"]), default="stop",
-                 show_default=True, help=_help("on-error", "With --batch.")),
-    click.option("--chunk-size", type=click.IntRange(1), default=100_000, show_default=True,
-                 help=_help("chunk-size", "With --batch.")),
+                 hidden=True),
+    click.option("--chunk-size", type=click.IntRange(1), default=100_000, hidden=True),
 )  # fmt: skip
 
 _SPHERE_SINGLE = ("velocity", "spin", "speed", "incidence_from_surface_deg", "heading_deg",
@@ -360,9 +363,9 @@ def sphere_command(ctx: click.Context, **o: Any) -> None:
     Presets: --ball tennis --surface hard (docs/conventions.md).
     The surface: --normal (tilted) and --surface-velocity (moving); the impact is solved in
     the surface's frame, the results are in the ground's.
-    --batch FILE --output OUT: columns vx,vy,vz,wx,wy,wz, optionally mu, kappa, mass,
-      radius, gyration, body, normal_x..z, surface_velocity_x..z (pairs of balls:
-      spinimpact pair --batch).
+    A file of impacts: spinimpact batch FILE --output OUT (columns vx,vy,vz,wx,wy,wz,
+      optionally mu, kappa, mass, radius, gyration, body, normal_x..z,
+      surface_velocity_x..z; spinimpact problems sphere lists them).
     --tangential walton|stronge|mindlin-deresiewicz: the contact point's tangential
       restitution of Walton's, Stronge's or the micro-slip law along the slip
       (docs/compliance.md); a plain report or --json.
@@ -428,9 +431,9 @@ def pair_command(ctx: click.Context, **o: Any) -> None:
     \b
     --velocity1 vx,vy,vz --spin1 wx,wy,wz (and 2), --normal from ball 2 to ball 1; or
       --speed1 2 --heading1-deg 0 --spin1-rpm 600 --spin1-axis topspin (on a table, y up).
-    --batch FILE --output OUT: columns vx,vy,vz,wx,wy,wz (ball 1), vx2,...,wz2 (ball 2),
-      optionally normal_x..z, mu, kappa, mass, radius, gyration, body, mass2, radius2,
-      gyration2, body2.
+    A file of impacts: spinimpact batch FILE --output OUT (columns vx,vy,vz,wx,wy,wz of
+      ball 1, vx2,...,wz2 of ball 2, normal_x..z, optionally mu, kappa, mass, radius,
+      gyration, body, mass2, radius2, gyration2, body2; spinimpact problems pair).
     """
     if o["batch"] is not None:
         return _batch(ctx, True, o, _PAIR_SINGLE)
