@@ -145,6 +145,7 @@ def test_the_cycle_check_can_fail():
         GRAPH.update(saved)
 
 
+@pytest.mark.slow
 def test_each_module_imports_alone_in_a_fresh_interpreter():
     """One child interpreter per module (batched in one process each, for speed);
     an import cycle that breaks at import time, or a missing name, fails here."""

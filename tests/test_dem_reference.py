@@ -84,6 +84,7 @@ def test_the_errors_use_kharaz_measure_on_interpolated_curves():
     assert np.isnan(dem.interpolated("lsd")([70.0])["e_t"][0])
 
 
+@pytest.mark.slow
 def test_the_total_rule_reproduces_mfixs_hertzian_curves(checks):
     """Tolerance: the measured 0.0088 (e_t), 3.20 rad/s, 0.074 deg, rounded up; the next test
     shows all of it is MFiX's step and lever arm, not a different model."""
@@ -100,6 +101,7 @@ def test_the_total_rule_reproduces_mfixs_hertzian_curves(checks):
         assert f"{value:.{digits}f}" in SECTION, (label, value)
 
 
+@pytest.mark.slow
 def test_the_difference_is_mfixs_step_and_lever_arm(checks):
     """The explicit step with MFiX's conventions reproduces MFiX (to its 4 printed decimals
     and where the touch falls within a step), and with this package's conventions and a
@@ -116,6 +118,7 @@ def test_the_difference_is_mfixs_step_and_lever_arm(checks):
         assert f"{value:.{digits}f}" in SECTION, value
 
 
+@pytest.mark.slow
 def test_the_linear_curves_and_their_step_error(checks):
     rules = [checks[f"lsd: {s} - MFiX"] for s in dem.SPRINGS]
     assert rules[0] == rules[1] == rules[2]  # a constant k_t: the three rules coincide

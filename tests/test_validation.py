@@ -10,6 +10,9 @@ from benchmarks import chung_ooi, kharaz
 
 from spinimpact.core.tangential import integrate_tangential, mindlin_stiffness_ratio
 
+#: Every model over every measured bounce, and the benchmarks in time: run by `make test`.
+pytestmark = pytest.mark.slow
+
 DOC = (Path(__file__).resolve().parents[1] / "docs" / "validation.md").read_text()
 
 

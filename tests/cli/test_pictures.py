@@ -162,6 +162,7 @@ def test_no_rebound_is_both_backward_and_spin_reversed():
     assert not (o.backward & o.reversed_spin).any()
 
 
+@pytest.mark.slow
 def test_figures_of_the_users_own_impact(tmp_path):
     out = run(
         "figures", "--output-dir", str(tmp_path), "--dpi", "50", "--body", "ring", "--vx", "2",

@@ -99,6 +99,7 @@ def trial(root: Path, k: int, signum: int, delay: float, expected: bytes):
     return "killed after finishing"
 
 
+@pytest.mark.slow
 def test_a_signal_at_any_moment_stops_the_batch_or_lets_it_finish_whole(tmp_path):
     # Every numeric column of the paper's bodies, 17-digit numbers: reading the numbers
     # (where a signal used to be lost inside NumPy) is a good share of the run.

@@ -38,6 +38,7 @@ def test_default_compares_with_solves_default():
     assert "the default of --kappa, as solve's" in out.stdout
 
 
+@pytest.mark.slow
 def test_calibrated_hertz_stays_hertz_and_says_so():
     """--contact hertz with --kappa 0.8 once ran a HuntCrossleyContact silently."""
     out = _run("--contact", "hertz", "--kappa", "0.8")

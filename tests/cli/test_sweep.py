@@ -31,6 +31,7 @@ def assert_one_line_error(out, needle):
     assert lines[0].startswith("spinimpact: error: ") and needle in lines[0], lines[0]
 
 
+@pytest.mark.slow
 def test_the_same_seed_gives_the_same_sweep_whatever_the_chunk_size():
     args = ("--vx", "uniform:-5:5", "--omega", "uniform:-50:50", "--samples", 20_000)
     args += ("--seed", 11, "--histogram", "dissipated_fraction:0:1:7")
@@ -58,6 +59,7 @@ def readme_sweep_commands():
     return grid, random.replace("…", "").split()
 
 
+@pytest.mark.slow
 def test_the_readme_sweep_commands_run_as_written():
     grid, random = readme_sweep_commands()
     assert random == ["--vx", "uniform:-5:5", "--samples", "100000000"]
@@ -89,6 +91,7 @@ def test_the_readme_sweep_commands_run_as_written():
         assert f")  {count}\n" in out.stdout
 
 
+@pytest.mark.slow
 def test_random_defaults_follow_samples_and_typed_uniform_axes():
     out = sweep("--samples", 1000, "--dry-run")  # no axis typed: vx and omega random
     assert out.returncode == 0 and "1,000 points" in out.stdout, out.stderr
@@ -100,6 +103,7 @@ def test_random_defaults_follow_samples_and_typed_uniform_axes():
     assert_one_line_error(out, "samples must be a positive integer")
 
 
+@pytest.mark.slow
 def test_sweeps_too_long_or_too_large_are_refused_in_one_line():
     # 1e10 grid points of vx times the 201 of omega's default grid
     out = sweep("--vx", "-5:5:10000000000")
@@ -123,6 +127,7 @@ def limited(gib):
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc")
+@pytest.mark.slow
 def test_memory_is_checked_against_the_address_space_limit_and_never_a_traceback():
     # 1e8 points a chunk: about 6 GiB, more than the 3 GiB the child may map (where more is
     # available, the address-space limit alone refuses it)
@@ -147,6 +152,7 @@ def test_dry_run_estimates_the_output_and_writes_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.slow
 def test_help_says_how_files_name_the_regimes(tmp_path):
     text = " ".join(sweep("--help").stdout.split())
     assert "FILE.parquet or FILE.csv" in text and "metadata.json" in text

@@ -78,6 +78,7 @@ def test_array_api_strict(case_arrays):
     )
 
 
+@pytest.mark.slow
 def test_dask_arrays(case_arrays):
     da = pytest.importorskip("dask.array", reason="dask is not installed")
     expected = kernels(case_arrays)
@@ -109,6 +110,7 @@ def jax():
     jax.config.update("jax_enable_x64", before)  # other tests see JAX as configured
 
 
+@pytest.mark.slow
 def test_jax_arrays_eager(case_arrays, jax):
     """Op by op (no jit), JAX performs NumPy's IEEE operations: the same bits."""
     jnp = jax.numpy

@@ -153,6 +153,7 @@ HARD = [
 STRONGE = _stronge_cases() + HARD
 
 
+@pytest.mark.slow
 def test_stronge_closed_form_equals_the_integration_in_time():
     ref = pytest.importorskip("tests.compliance_reference")
     slip, vy, zeta, mu, kappa, ratio = (np.array(c) for c in zip(*STRONGE, strict=True))

@@ -174,6 +174,7 @@ def _numba():
     return pytest.importorskip("numba", reason="the [fast] extra (numba) is not installed")
 
 
+@pytest.mark.slow
 def test_compiled_callers_get_the_same_bits(cases):
     nb = _numba()
     assert law.HAVE_NUMBA

@@ -450,6 +450,7 @@ finite = dict(allow_nan=False, allow_infinity=False)
     mu=st.one_of(st.just(0.0), st.floats(0, 20, **finite)),
     kappa=st.one_of(st.sampled_from([0.0, 1.0]), st.floats(0, 1, **finite)),
 )
+@pytest.mark.slow
 def test_single_impacts_agree_with_the_reference(mass, gyration, dist, angle, slip, vn, mu, kappa):
     """Hypothesis explores the edges (exact zeros, huge friction, extreme slip ratios)."""
     rx, ry = dist * np.cos(angle), dist * np.sin(angle)

@@ -133,6 +133,7 @@ def test_full_stick_linear_spring_is_a_harmonic_oscillator():
 
 
 @pytest.mark.parametrize("angle", [5.0, 20.0, 45.0])
+@pytest.mark.slow
 def test_stiff_tangential_spring_converges_to_the_rigid_law(angle):
     vx, vy = 3.9 * math.sin(math.radians(angle)), -3.9 * math.cos(math.radians(angle))
     rigid = solve(Body.solid_sphere(mass=M, radius=R), vx, vy, 0.0, mu=0.092, kappa=1.0)
@@ -169,6 +170,7 @@ def _final_gain(run):
     return kinetic / run.energy[0] - 1.0
 
 
+@pytest.mark.slow
 def test_the_other_spring_rules_can_gain_energy():
     """Why "scaled" is the default (module docstring): on the same elastic impacts the
     plain incremental rule lets E rise while unloading, and the total-displacement rule

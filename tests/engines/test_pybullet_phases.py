@@ -20,6 +20,9 @@ from spinimpact import solve
 
 from .bodies import PYBULLET_EXACT, SPHERE, needs
 
+#: Bullet steps through hundreds of bounces, seconds a test: `make test` runs them.
+pytestmark = pytest.mark.slow
+
 ROOT = Path(__file__).resolve().parents[2]
 #: PyBullet 3.2.7's contactSlop in a fresh process, m.
 SLOP = 1e-5

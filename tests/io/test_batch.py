@@ -168,6 +168,7 @@ def test_empty_and_missing_input(tmp_path):
     assert len(result.stderr.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_chunking_does_not_change_results(mixed, tmp_path):
     path, _ = mixed
     run_batch(path, tmp_path / "a.csv", defaults=DEFAULTS, chunk_size=1)
@@ -202,6 +203,7 @@ def _run(tmp_path, text, *args, name="in.csv"):
     return cli("batch", src, "--output", tmp_path / "out.csv", *args)
 
 
+@pytest.mark.slow
 def test_common_csv_layouts(tmp_path):
     # byte-order mark, CRLF line ends, blank lines, a quoted multi-line field
     text = '\ufeffvx,vy,omega,note\r\n1,-1,0,"two\r\nlines"\r\n\r\n2,-2,5,plain\r\n\r\n'
@@ -249,6 +251,7 @@ def test_first_bad_row_is_reported_whatever_the_column(tmp_path):
     assert result.returncode == 2 and "row 1 (line 2), column omega" in result.stderr
 
 
+@pytest.mark.slow
 def test_bad_defaults_and_outputs(tmp_path):
     src = tmp_path / "in.csv"
     src.write_text("vx,vy,omega\n1,-1,0\n")
@@ -264,6 +267,7 @@ def test_bad_defaults_and_outputs(tmp_path):
         assert len(result.stderr.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_special_file_output_is_not_replaced(tmp_path):
     import os
     import stat

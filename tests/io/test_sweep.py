@@ -93,6 +93,7 @@ def test_bad_sweeps(kwargs, message):
         make(**kwargs)
 
 
+@pytest.mark.slow
 def test_sweep_command(tmp_path):
     out = subprocess.run(
         [
@@ -122,6 +123,7 @@ def test_sweep_command(tmp_path):
     assert bad.returncode == 2 and "FIELD:LOW:HIGH:BINS" in bad.stderr
 
 
+@pytest.mark.slow
 def test_dask_cluster_gives_the_same_numbers(tmp_path):
     distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
     sweep = make(samples=60_000, chunk_size=5000, vx="uniform:-5:5", omega="uniform:-50:50")

@@ -192,6 +192,7 @@ def test_bad_input_through_the_law_is_named_as_in_solve():
 # -- Stronge -----------------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_stronge_through_solve_energy_regimes_and_its_rigid_limit():
     c = random_cases(400, seed=21)
     args = (_body(c), c["vx"], c["vy"], c["omega"])

@@ -194,6 +194,7 @@ def test_wrong_type(build, message):
         build()
 
 
+@pytest.mark.slow
 def test_simulate_command(tmp_path):
     plot = tmp_path / "sim.png"
     out = subprocess.run(

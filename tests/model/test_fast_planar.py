@@ -25,6 +25,7 @@ def cases():
 
 
 @pytest.mark.parametrize("law", LAWS)
+@pytest.mark.slow
 def test_every_regime_bit_for_bit(cases, law, monkeypatch):
     c = cases
     seen = set()

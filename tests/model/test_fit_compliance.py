@@ -36,6 +36,7 @@ def law(name, value):
     "model, cls, param, value", [("walton", "Walton", "beta0", 0.4),
                                  ("stronge", "Stronge", "poisson_ratio", 0.3)]
 )  # fmt: skip
+@pytest.mark.slow
 def test_the_laws_parameter_is_recovered(model, cls, param, value):
     data, imp = measured(law(cls, value))
     assert model in TANGENTIAL

@@ -16,6 +16,9 @@ from spinimpact import Body, solve
 from spinimpact.model.fit import fit
 from spinimpact.model.fit_data import MeasuredBounces
 
+#: 200 fits a test: run by `make test` only.
+pytestmark = pytest.mark.slow
+
 BALL = Body.solid_sphere(mass=0.058, radius=0.033)
 TRUE = {"mu": 0.35, "kappa": 0.75}
 N_SETS = 200

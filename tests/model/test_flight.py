@@ -82,6 +82,7 @@ def test_topspin_dips_backspin_floats_and_sidespin_curves_left():
     assert float(flat.bounces.position.x[0]) < float(vacuum.bounces.position.x[0])
 
 
+@pytest.mark.slow
 def test_many_balls_in_chunks_give_the_same_numbers_as_one_chunk():
     rng = np.random.default_rng(11)
     speed, rpm = rng.normal(45, 3, 23), rng.normal(2500, 400, 23)

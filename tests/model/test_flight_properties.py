@@ -3,11 +3,15 @@ energy, the air only takes energy away between bounces, and many balls at once g
 ball's own numbers."""
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from spinimpact.model.flight import flight
 from spinimpact.model.presets import BALLS, GROUNDS
+
+#: Hypothesis flies a few hundred balls a test: run by `make test` only.
+pytestmark = pytest.mark.slow
 
 G = 9.80665
 launches = st.fixed_dictionaries({

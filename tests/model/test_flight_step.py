@@ -93,6 +93,7 @@ def test_without_air_the_step_is_unused_and_any_step_is_accepted():
     np.testing.assert_array_equal(a.bounces.position.x, b.bounces.position.x)
 
 
+@pytest.mark.slow
 def test_no_ball_outruns_the_energy_bound_the_limit_rests_on():
     """|v| <= v_max and |w| <= w_max at every bounce and at the end, for scattered launches
     of every ball on every ground, with a wall; the bound the limit is computed from."""
@@ -123,6 +124,7 @@ def test_no_ball_outruns_the_energy_bound_the_limit_rests_on():
 @pytest.mark.parametrize(
     "law", [Walton(1.0), Walton(-1.0), Stronge(poisson_ratio=0.3), Stronge(poisson_ratio=-0.9)]
 )
+@pytest.mark.slow
 def test_the_energy_bound_holds_with_compliance_laws(law):
     """A tangential law keeps |beta| <= 1, so no bounce gains energy either."""
     rng = np.random.default_rng(3)

@@ -27,6 +27,7 @@ def test_without_tangential_simulate_is_unchanged():
 
 
 @pytest.mark.parametrize("omega", [0.0, -300.0, 900.0])
+@pytest.mark.slow
 def test_stiff_tangential_spring_gives_todays_simulation(omega):
     """The rigid limit: a tangential spring 1e6 times stiffer than Mindlin's reproduces
     simulate() without tangential compliance (the paper's stick: F = 0) to 1e-5."""

@@ -109,6 +109,7 @@ def test_the_state_at_separation_is_integrated_not_interpolated():
         _close(sim, imp, *args[:3])
 
 
+@pytest.mark.slow
 def test_short_stick_and_slip_windows_against_the_closed_form():
     """Random impacts where the windows are short: stiff tangential springs (ratio 2 to
     200, several tangential oscillations per contact) and little friction (mu 0.01 to

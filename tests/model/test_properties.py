@@ -60,6 +60,7 @@ def test_work_ratio_bounds(vx, w, omega, mu, kappa, zeta):
 
 
 @given(speed, mus, kappas, zetas, st.sampled_from([-1.0, 1.0]))
+@pytest.mark.slow
 def test_continuity_across_regime_boundaries(w, mu, kappa, zeta, sign):
     """Rebound, energy, works and mu_hat are continuous where the regime changes."""
     for boundary in (zeta * mu, (1 + kappa) * zeta * mu):

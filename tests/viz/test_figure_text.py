@@ -134,6 +134,7 @@ def _untypeset(fig):
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
+@pytest.mark.slow
 def test_impact_figures_have_no_text_on_a_line_or_a_text(name):
     for kind, fig in _figures(name).items():
         assert _problems(fig) == [], (name, kind)

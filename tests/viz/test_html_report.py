@@ -89,6 +89,7 @@ def test_report_bad_output_name(tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+@pytest.mark.browser
 @needs_browser
 def test_browser_shows_the_report(page, tmp_path):
     path, _, imp = page
@@ -100,6 +101,7 @@ def test_browser_shows_the_report(page, tmp_path):
     assert f'id="regime">{imp.regime}<' in dom
 
 
+@pytest.mark.browser
 @needs_browser
 def test_browser_screenshot(page, tmp_path):
     from matplotlib.image import imread

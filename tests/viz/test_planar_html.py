@@ -214,6 +214,7 @@ def page_file(tmp_path_factory):
     return path, imp
 
 
+@pytest.mark.browser
 @needs_browser
 @pytest.mark.parametrize("width", [1200, 800])
 def test_browser_shows_everything_within_the_window(page_file, tmp_path, width):
@@ -234,6 +235,7 @@ def test_browser_shows_everything_within_the_window(page_file, tmp_path, width):
     assert f'id="regime">{imp.regime}<' in dom
 
 
+@pytest.mark.browser
 @needs_browser
 def test_browser_screenshot(page_file, tmp_path):
     from matplotlib.image import imread

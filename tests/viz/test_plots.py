@@ -108,6 +108,7 @@ def test_unknown_paper_figure():
         paper_figure("fig9")
 
 
+@pytest.mark.slow
 def test_figures_command_writes_every_figure(tmp_path):
     out = subprocess.run(
         [
@@ -134,6 +135,7 @@ def test_figures_command_writes_every_figure(tmp_path):
     assert not list(tmp_path.glob(".*"))  # no temporary files left
 
 
+@pytest.mark.slow
 def test_figures_command_svg_and_bad_output(tmp_path):
     out = subprocess.run(
         [
@@ -208,6 +210,7 @@ def test_friction_work_panel_shows_no_line_where_the_ratio_is_undefined():
     assert "undefined" in panel.get_title()  # no friction: undefined everywhere, and said
 
 
+@pytest.mark.slow
 def test_map_command(tmp_path):
     target = tmp_path / "map.png"
     target.write_bytes(b"previous content")

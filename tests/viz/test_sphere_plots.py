@@ -202,6 +202,7 @@ def test_page_holds_the_tables_and_the_figure(pages):
     assert "angle between the paths" in pages["pair"]
 
 
+@pytest.mark.browser
 @needs_browser
 def test_browser_shows_everything_within_the_window(pages, tmp_path):
     path = tmp_path / "pair.html"  # the widest tables (four columns of velocities)

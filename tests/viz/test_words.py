@@ -96,6 +96,7 @@ def test_dpi_has_help_text(command):
     assert "pixels per inch" in " ".join(block.split()), block
 
 
+@pytest.mark.slow
 def test_html_sets_the_scripts_of_its_symbols():
     imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 3.0, -4.0, 10.0, mu=0.2, kappa=0.8)
     page = impact_report_html(imp)
