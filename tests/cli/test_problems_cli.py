@@ -64,3 +64,37 @@ def test_sphere_batch_is_a_deprecated_alias_of_batch(cli, tmp_path):
     assert status == 0 and "--batch" not in out and "spinimpact batch" in out
     status, _, err = cli("sphere", "--on-error", "skip")  # without a file: not silently ignored
     assert status == 2 and "--on-error goes with a file of impacts" in err
+
+
+def test_solve_and_report_one_impact_of_any_problem(cli, tmp_path):
+    sets = ("--set", "velocity=2,-3,0", "--set", "spin=0,0,30", "--set", "mu=0.3")
+    status, out, err = cli("solve", "--problem", "sphere", *sets, "--json")
+    assert status == 0, err
+    from spinimpact import Body, solve_sphere
+
+    want = solve_sphere(Body.solid_sphere(mass=1.0, radius=0.1), [2, -3, 0], [0, 0, 30],
+                        mu=0.3, kappa=0.8)  # fmt: skip
+    assert json.loads(out) == json.loads(json.dumps(want.to_dict()))
+    status, out, _ = cli("solve", "--problem", "sphere", *sets)
+    assert status == 0 and "after_wz" in out and "rad/s" in out and "default" in out
+    page = tmp_path / "one.html"
+    status, _, err = cli("report", "--problem", "pair", "--set", "velocity1=1,0,0", "--set",
+                         "spin1=0,20,0", "--set", "velocity2=0,0,0", "--set", "spin2=0,0,0",
+                         "--set", "normal=-1,0,0", "--output", page)  # fmt: skip
+    assert status == 0, err
+    assert page.read_text().startswith("<!DOCTYPE html>") and "after2_vx" in page.read_text()
+    for args, message in [
+        (("--problem", "sphere", "--vx", "2"), "--vx describes the paper's bodies"),
+        (("--set", "vx=1"), "--set goes with --problem NAME"),
+        (("--problem", "sphere", "--set", "velocity=1,2"), "--set velocity takes 3 numbers"),
+        (("--problem", "sphere", "--set", "vx=1"), "velocity of problem 'sphere' is given in part"),
+        (("--problem", "sphere", "--set", "velocity=1,-1,0"), "problem 'sphere' needs wx"),
+    ]:
+        status, _, err = cli("solve", *args)
+        assert status == 2 and err.count("\n") == 1 and message in err, (args, err)
+
+
+def test_a_registered_problem_gets_solve_options(cli, toy):
+    status, out, err = cli("solve", "--problem", "toy", "--set", "speed=-2", "--json")
+    assert status == 0, err
+    assert json.loads(out)["speed_after"] == 1.0  # e's default, 0.5

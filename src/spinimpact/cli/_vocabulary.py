@@ -131,7 +131,7 @@ TERMS: dict[str, Term] = {
     "seed": Term("Seed of the random samples"),
     "batch": Term("Solve every row of this CSV or Parquet file instead"),
     "problem": Term("The problem"),
-    "set": Term("Default of any input of the problem"),
+    "set": Term("An input of the problem, as INPUT=VALUE"),
     "fields": Term("Result columns to write"),
     "on-error": Term(
         "stop: the first bad row ends the run and nothing is written; skip: bad rows are "

@@ -22,40 +22,13 @@ from ..model.registry import problem as get_problem
 from ..model.registry import problems
 from ._common import DEFAULTS, body_options, progress, surface_options
 from ._compliance import tangential_law, tangential_options
+from ._problem_options import problem_name, problem_options, settings
 from .sweep import _dask_client
 
 __all__ = ["batch_command"]
 
 #: Options that describe one of the paper's bodies: not for files of planar bodies.
 _PAPER_OPTIONS = ("body", "mass", "radius", "gyration")
-
-
-def _problem_option(name: str) -> str:
-    """``--problem``'s value, checked against the registry."""
-    try:
-        return get_problem(name).name
-    except ValueError as exc:
-        raise click.UsageError(f"--problem: {exc}") from None
-
-
-def _settings(items: tuple[str, ...]) -> dict[str, Any]:
-    """``--set INPUT=VALUE`` items as defaults: numbers, a comma list for a vector, or text."""
-    out: dict[str, Any] = {}
-    for item in items:
-        name, sep, text = item.partition("=")
-        name = name.strip()
-        if not sep or not name or not text.strip():
-            raise click.UsageError(f"--set takes INPUT=VALUE, got {item!r}")
-        parts = [t.strip() for t in text.split(",")]
-        try:
-            numbers = [float(t) for t in parts]
-        except ValueError:
-            if len(parts) > 1:
-                raise click.UsageError(f"--set {name}: {text!r} is not a list of numbers") from None
-            out[name] = text.strip()
-            continue
-        out[name] = numbers if len(parts) > 1 else numbers[0]
-    return out
 
 
 def _given(ctx: click.Context, name: str) -> bool:
@@ -104,20 +77,10 @@ def _given(ctx: click.Context, name: str) -> bool:
     show_default=True,
     help="Rows per chunk.",
 )
-@click.option(
-    "--problem",
-    default=None,
-    metavar="NAME",
-    help="The problem the file holds (spinimpact problems lists them); by default its columns say.",
-)
-@click.option(
-    "--set",
-    "settings",
-    multiple=True,
-    metavar="INPUT=VALUE",
-    help="Default of any input of the problem for rows or files that lack it, e.g. "
-    "--set normal=0,0.96,0.28 --set body=spherical-shell (repeatable; a vector by its name "
-    "takes all its components).",
+@problem_options(
+    "Listed by spinimpact problems; by default the file's columns say which.",
+    "Its default, for rows or files that lack it, e.g. --set normal=0,0.96,0.28 --set "
+    "body=spherical-shell (repeatable; a vector by its name takes all its components).",
 )
 @click.option("--dask", "dask_address", default=None, metavar="ADDRESS",
               help="Solve the chunks on the Dask scheduler at ADDRESS ([dask] extra); the "
@@ -131,7 +94,7 @@ def batch_command(
     on_error: str,
     chunk_size: int,
     problem: str | None,
-    settings: tuple[str, ...],
+    set_items: tuple[str, ...],
     dask_address: str | None,
     **options: Any,
 ) -> None:
@@ -170,8 +133,8 @@ def batch_command(
     defaults["body"] = None if o["gyration"] is not None else (o["body"] or DEFAULTS["body"])
     defaults["law"] = o["law"]
     defaults["tangential"] = tangential_law(o)
-    chosen_problem = None if problem is None else _problem_option(problem)
-    given_settings = _settings(settings)
+    chosen_problem = None if problem is None else problem_name(problem)
+    given_settings = settings(set_items)
     defaults.update(given_settings)
     chosen = None if fields is None else [f for f in fields.split(",") if f.strip()]
 

@@ -20,6 +20,7 @@ from ._common import (
     surface_options,
 )
 from ._compliance import print_compliant, tangential_law, tangential_options
+from ._problem_options import problem_options, solve_problem
 from ._vocabulary import help as _help
 
 __all__ = ["solve_command", "report_command"]
@@ -30,18 +31,38 @@ def _particle(o: dict[str, Any]) -> ParticleImpact:
     return solve_particle(o["vx"], o["vy"], mu=o["mu"], kappa=o["kappa"], mass=o["mass"])
 
 
+#: The paper's-body options, which --problem replaces by --set.
+_PAPER = ("body", "mass", "radius", "gyration", "vx", "vy", "omega", "mu", "kappa")
+_ANY_PROBLEM = (
+    "Solve one impact of this registered problem instead (spinimpact problems lists them); "
+    "its inputs are given with --set.",
+    "With --problem, e.g. --set vx=2 --set wz=30 (repeatable; a vector by its name takes all "
+    "its components; inputs not given take their defaults).",
+)
+
+
+def _one_problem(ctx: click.Context, name: str, items: tuple[str, ...], law: Any) -> Any:
+    if law is not None:
+        raise click.UsageError("--tangential goes with the paper's bodies; not with --problem")
+    return solve_problem(ctx, name, items, _PAPER)
+
+
 @click.command("solve")
 @body_options
 @incidence_options
 @surface_options
 @tangential_options
+@problem_options(*_ANY_PROBLEM)
 @click.option(
     "--json",
     "as_json",
     is_flag=True,
     help=_help("json", "Every Impact field; infinite or undefined values are null."),
 )
-def solve_command(as_json: bool, **options: Any) -> None:
+@click.pass_context
+def solve_command(
+    ctx: click.Context, as_json: bool, problem: str | None, set_items: tuple, **options: Any
+) -> None:
     """Solve one impact and print the report (regime, rebound, energy, works, mu_hat).
 
     With no options it solves the documented default case: a 1 kg solid sphere
@@ -58,8 +79,23 @@ def solve_command(as_json: bool, **options: Any) -> None:
       --tangential walton|stronge|mindlin-deresiewicz: the contact point's tangential
       restitution beta = -u+/u- of Walton's law, Stronge's, or Hertz contact with
       Mindlin-Deresiewicz micro-slip (docs/compliance.md).
+    --problem NAME --set INPUT=VALUE ...: one impact of any registered problem
+      (spinimpact problems NAME lists its inputs), reported as its inputs and every
+      result column with their units.
     """
     law = tangential_law(options)
+    if problem is not None:
+        declared, values, result = _one_problem(ctx, problem, set_items, law)
+        if as_json:
+            click.echo(json.dumps(jsonable(result[0].to_dict()), indent=2))
+        else:
+            from ..viz.problems import result_tables
+            from ..viz.report import print_tables
+
+            print_tables(result_tables(declared, values, result))
+        return
+    if set_items:
+        raise click.UsageError("--set goes with --problem NAME")
     if law is not None:
         o = options
         body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
@@ -83,18 +119,30 @@ def solve_command(as_json: bool, **options: Any) -> None:
 @body_options
 @incidence_options
 @surface_options
+@problem_options(*_ANY_PROBLEM)
 @click.option(
     "--output", default="impact.html", show_default=True, help=_help("output", "The HTML page.")
 )
-def report_command(output: str, **options: Any) -> None:
+@click.pass_context
+def report_command(
+    ctx: click.Context, output: str, problem: str | None, set_items: tuple, **options: Any
+) -> None:
     """Write one self-contained HTML page about an impact: inputs, regime, rebound,
-    energy budget, works by phase, coefficients, outcome and figures."""
+    energy budget, works by phase, coefficients, outcome and figures (with --problem:
+    the inputs and result columns of one impact of that problem)."""
     from ..io import atomic_path
     from ..viz.html import impact_report_html
 
     if Path(output).suffix.lower() not in (".html", ".htm"):
         raise click.UsageError(f"--output must end in .html, got {output!r}")
-    page = impact_report_html(solve_options(options), _particle(options))
+    if problem is not None:
+        from ..viz.problems import problem_report_html
+
+        page = problem_report_html(*_one_problem(ctx, problem, set_items, None))
+    elif set_items:
+        raise click.UsageError("--set goes with --problem NAME")
+    else:
+        page = impact_report_html(solve_options(options), _particle(options))
     with atomic_path(output) as tmp:
         tmp.write_text(page, encoding="utf-8")
     click.echo(output)
