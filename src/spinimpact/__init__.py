@@ -14,6 +14,7 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 (:class:`Body`, :func:`solve`, :class:`Impact`) <- :mod:`spinimpact.cli`.
 """
 
+from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
 from .model.body import Body
 from .model.compliance import (
     CompliantImpact,
@@ -41,7 +42,6 @@ from .model.planar import (
 )
 from .model.planar_body import Pendulum, PlanarBody
 from .model.presets import BALLS, GROUNDS, Ball, Ground, Wall
-from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
 from .model.registry import Input, Problem, detect, problem, problems, register, unregister
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
