@@ -15,6 +15,8 @@ files name each column's SI unit in its field metadata (:mod:`spinimpact.io._uni
 from __future__ import annotations
 
 import contextlib
+import csv
+import io
 import os
 from collections.abc import Iterator, Sequence
 from pathlib import Path
@@ -30,15 +32,25 @@ from .atomic import atomic_directory, atomic_path
 __all__ = ["ArrowWriter", "npy_columns", "parquet_columns"]
 
 
+#: Characters that make a CSV cell need quotes (RFC 4180).
+_STRUCTURAL = '[",\r\n]'
+#: Rows of a table rendered as CSV text at a time (a few MB of text).
+_CSV_ROWS = 16_384
+
+
 class ArrowWriter:
     """pyarrow tables to one Parquet or CSV file, opened on the first table.
 
     Parameters
     ----------
-    path : pathlib.Path
-        The file to write (normally a temporary path from ``atomic_path``).
+    path : pathlib.Path or pyarrow.NativeFile
+        The file to write (normally a temporary path from ``atomic_path``), or a stream
+        to write to (left open).
     fmt : {"parquet", "csv"}
-        File format; CSV quotes only the cells that need it.
+        File format. CSV as Python's csv module writes it: the header is plain names,
+        numbers and flags are never quoted, and a text cell is quoted (its quotes doubled)
+        only where it holds a comma, a quote or a line break; the numbers are written as
+        pyarrow writes them, in their shortest round-trip form.
 
     Raises
     ------
@@ -63,7 +75,6 @@ class ArrowWriter:
             text = [f.name for f in schema if self.pa.types.is_string(f.type)]
             self.writer = pq.ParquetWriter(self.path, schema, use_dictionary=text)
         else:
-            pc = require("pyarrow.csv", "fast CSV")
             for f in schema:  # a CSV cell holds one number or text, not a list or record
                 if self.pa.types.is_nested(f.type):
                     kind = "lists" if "list" in str(f.type) else "nested values"
@@ -71,15 +82,69 @@ class ArrowWriter:
                         f"column {f.name!r} holds {kind} ({f.type}), which a CSV file cannot "
                         "hold: write Parquet (.parquet), or drop the column"
                     )
-            options = pc.WriteOptions(quoting_style="needed")
-            self.writer = pc.CSVWriter(self.path, schema, write_options=options)
+            self.csv = require("pyarrow.csv", "fast CSV")
+            owned = isinstance(self.path, str | os.PathLike)
+            self.writer = open(self.path, "wb") if owned else self.path  # noqa: SIM115 (close)
+            self.owned = owned
+            line = io.StringIO()
+            csv.writer(line, lineterminator="\n").writerow(schema.names)
+            self.writer.write(line.getvalue().encode())
+
+    def _csv_rows(self, table: Any) -> Iterator[Any]:
+        """The CSV text of ``table``'s rows, a slice of :data:`_CSV_ROWS` at a time.
+
+        Each column is cast to text as pyarrow's CSV writer casts it (numbers in their
+        shortest round-trip form, flags ``true``/``false``, nulls empty); a text cell is
+        quoted, its quotes doubled, only where it holds a comma, a quote or a line break.
+        pyarrow's writer quotes every text cell, or refuses those that need it: it writes
+        the slices where no cell needs quotes (faster), the cells are joined here where
+        some do.
+        """
+        pa, types = self.pa, self.pa.types
+        compute = require("pyarrow.compute", "fast CSV")
+        text_types = (types.is_string, types.is_large_string, types.is_binary,
+                      types.is_large_binary)  # fmt: skip
+        large = pa.large_string()
+        quote, comma, newline, none = (pa.scalar(c, large) for c in ('"', ",", "\n", ""))
+        plain = self.csv.WriteOptions(include_header=False, quoting_style="none")
+        for start in range(0, table.num_rows, _CSV_ROWS):
+            part = table.slice(start, _CSV_ROWS)
+            cells, quoted = list(part.columns), False
+            for j, column in enumerate(cells):
+                kind = column.type
+                if types.is_dictionary(kind):
+                    column, kind = column.cast(kind.value_type), kind.value_type
+                if not any(test(kind) for test in text_types):
+                    continue  # numbers and flags: never quoted
+                text = compute.cast(column.combine_chunks(), large)
+                needs = compute.match_substring_regex(text, _STRUCTURAL)
+                if compute.any(needs).as_py():
+                    doubled = compute.replace_substring(text, '"', '""')
+                    both = compute.binary_join_element_wise(quote, doubled, quote, none)
+                    cells[j], quoted = compute.if_else(needs, both, text), True
+            if not quoted:
+                out = pa.BufferOutputStream()
+                self.csv.write_csv(part, out, plain)
+                yield out.getvalue()
+                continue
+            cells = [compute.fill_null(compute.cast(c, large), "") for c in cells]
+            cells = [c.combine_chunks() if isinstance(c, pa.ChunkedArray) else c for c in cells]
+            cells[-1] = compute.binary_join_element_wise(cells[-1], none, newline)
+            rows = compute.binary_join_element_wise(*cells, comma)  # each ends in \n
+            offsets, data = rows.buffers()[1:3]  # the rows' text, one after the other
+            ends = np.frombuffer(offsets, np.int64)[[rows.offset, rows.offset + len(rows)]]
+            yield memoryview(data)[int(ends[0]) : int(ends[1])]
 
     def write(self, table: Any) -> None:
         """Append ``table``; the first one fixes the schema if :meth:`open` was not called."""
         if self.writer is None:
             self.open(table.schema)
         try:
-            self.writer.write_table(table)
+            if self.fmt == "csv":
+                for block in self._csv_rows(table):
+                    self.writer.write(block)
+            else:
+                self.writer.write_table(table)
         except self.pa.ArrowInvalid as err:
             if self.fmt != "csv" or "UTF8" not in str(err):
                 raise
@@ -107,7 +172,8 @@ class ArrowWriter:
             if schema is None:
                 return
             self.open(schema)
-        self.writer.close()
+        if self.fmt == "parquet" or self.owned:
+            self.writer.close()
         self.writer = None
 
 
