@@ -14,6 +14,7 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 (:class:`Body`, :func:`solve`, :class:`Impact`) <- :mod:`spinimpact.cli`.
 """
 
+from . import _limits  # noqa: F401  (first: bounds the thread pools under ulimit -v)
 from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
 from .model.body import Body
 from .model.compliance import (

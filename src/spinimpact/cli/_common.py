@@ -241,6 +241,27 @@ def _fail(message: str) -> None:
     sys.exit(2)
 
 
+#: The options that bound a command's memory, for the message when it runs out.
+MEMORY_OPTIONS = {
+    "batch": "--chunk-size",
+    "sweep": "--chunk-size",
+    "map": "--resolution or --dpi",
+    "planar": "--resolution or --dpi",
+    "figures": "--dpi",
+    "flight": "--samples or --dpi",
+}
+
+
+def _memory_advice() -> str:
+    """What to lower when the command that ran (read from the command line) runs out of
+    memory."""
+    words = [w for w in sys.argv[1:] if not w.startswith("-")]
+    option = MEMORY_OPTIONS.get(words[0] if words else "")
+    if option is None:
+        return "ask for less at a time, or allow the process more memory"
+    return f"lower {option}, or allow the process more memory"
+
+
 @contextmanager
 def errors_to_exit_2() -> Iterator[None]:
     """Turn every error in the input into one line on stderr and exit status 2.
@@ -254,6 +275,9 @@ def errors_to_exit_2() -> Iterator[None]:
       optional package (``ImportError``, whose message names the extra to
       install) and a file that cannot be read or written (``OSError``) print
       ``spinimpact: error: MESSAGE`` and exit with status 2, without a traceback;
+    * running out of memory (``MemoryError``, or a thread that cannot start) prints one
+      line naming the option that bounds the command's memory
+      (:data:`MEMORY_OPTIONS`), exit status 2;
     * a stop by a signal (:class:`~spinimpact.io._stop.Stopped`: Ctrl-C, SIGTERM)
       prints which and exits with status 128 + its number (130 for SIGINT, 143 for
       SIGTERM); Click's own abort prints ``spinimpact: aborted`` and exits with 130.
@@ -266,7 +290,14 @@ def errors_to_exit_2() -> Iterator[None]:
     from ..io._stop import Stopped
 
     try:
-        yield
+        try:
+            yield
+        except RuntimeError as exc:  # a thread pool that cannot start is out of memory
+            if "can't start new thread" not in str(exc):
+                raise
+            raise MemoryError(str(exc)) from None
+    except MemoryError as exc:
+        _fail(f"out of memory ({str(exc) or 'MemoryError'}): {_memory_advice()}")
     except Stopped as exc:
         name = signal.Signals(exc.signum).name
         click.echo(f"spinimpact: stopped by {name}; no output was changed", err=True)

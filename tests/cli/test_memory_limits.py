@@ -1,0 +1,59 @@
+"""Commands under an address-space limit (``ulimit -v``): they finish, or stop with one
+line naming the option that bounds their memory, exit 2, the old output intact and no
+temporary file left; never a traceback.
+
+Thread pools (OpenBLAS, Numba, pyarrow) reserve address space per thread, so under a limit
+they are capped (spinimpact._limits): a small batch runs under 800 MiB, where it used to
+die with a MemoryError traceback inside Numba's start-up. A chunk too large for the limit
+is refused in one line naming --chunk-size."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS as Linux counts it"),
+]
+
+MiB = 2**20
+OLD = b"old output the user keeps\n"
+
+
+def limited(limit: int):
+    def preexec() -> None:
+        import resource
+
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+    return preexec
+
+
+def batch(folder: Path, rows: int, limit: int, *args: str) -> subprocess.CompletedProcess:
+    rng = np.random.default_rng(1)
+    cells = np.column_stack([rng.uniform(-5, 5, rows), rng.uniform(-5, -0.1, rows),
+                             rng.uniform(-50, 50, rows)])  # fmt: skip
+    np.savetxt(folder / "in.csv", cells, delimiter=",", header="vx,vy,omega", comments="")
+    (folder / "out.csv").write_bytes(OLD)
+    command = [sys.executable, "-m", "spinimpact", "batch", "in.csv", "--output", "out.csv"]
+    return subprocess.run([*command, *args], cwd=folder, capture_output=True, text=True,
+                          preexec_fn=limited(limit), timeout=300)  # fmt: skip
+
+
+def test_a_small_batch_runs_under_800_mib_of_address_space(tmp_path):
+    out = batch(tmp_path, 1000, 800 * MiB)
+    assert out.returncode == 0, out.stderr
+    assert (tmp_path / "out.csv").read_text().count("\n") == 1001
+
+
+def test_a_chunk_too_large_for_the_limit_is_refused_naming_chunk_size(tmp_path):
+    out = batch(tmp_path, 300_000, 600 * MiB, "--chunk-size", "300000")
+    assert out.returncode == 2, out.stderr
+    assert "Traceback" not in out.stderr and len(out.stderr.splitlines()) == 1
+    assert out.stderr.startswith("spinimpact: error: out of memory (")
+    assert "lower --chunk-size" in out.stderr
+    assert (tmp_path / "out.csv").read_bytes() == OLD
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "out.csv"]
