@@ -227,13 +227,23 @@ def as_body(body: Any, name: str = "body") -> Body:
     """
     if isinstance(body, Body):
         return body
-    from .presets import Ball  # presets imports this module
-
-    if isinstance(body, Ball):
+    if isinstance(body, BODY_LIKE):
         return body.body
     raise TypeError(
         f"{name} must be a spinimpact.Body or a spinimpact.Ball, got {type(body).__name__}"
     )
+
+
+#: Types that stand for a body through their ``.body`` (a :class:`~spinimpact.Ball`, which
+#: :mod:`spinimpact.model.presets` adds here, since that module imports this one).
+BODY_LIKE: tuple[type, ...] = ()
+
+
+def accept_as_body(kind: type) -> type:
+    """Let :func:`as_body` take instances of ``kind`` through their ``.body``."""
+    global BODY_LIKE
+    BODY_LIKE = (*BODY_LIKE, kind)
+    return kind
 
 
 def check_sphere(body: Body, name: str = "gyration") -> None:

@@ -26,7 +26,7 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .._validation import check, scalar
-from .body import Body, check_sphere
+from .body import Body, accept_as_body, check_sphere
 
 __all__ = ["Ball", "Ground", "Wall", "BALLS", "GROUNDS", "thick_shell_gyration", "ball",
            "ground"]  # fmt: skip
@@ -45,6 +45,7 @@ def _nonnegative(name: str, value: float) -> float:
     return x
 
 
+@accept_as_body
 @dataclass(frozen=True, eq=False)
 class Ball:
     """A ball: a sphere with aerodynamic coefficients (:mod:`spinimpact.core.aero`).
