@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from spinimpact import Body, solve
+from spinimpact import BALLS, Body, solve
 from spinimpact.cli import main
 
 from tests.model.test_fit import stall_the_optimizer
@@ -20,6 +20,7 @@ from tests.model.test_fit import stall_the_optimizer
 EXE = Path(sys.executable).parent / "spinimpact"
 BALL = Body.solid_sphere(mass=0.058, radius=0.033)
 HEADER = "vx,vy,omega,after_vx,after_vy,after_omega"
+BODY = ("--body", "solid-sphere", "--radius", "0.033")  # a fit needs its body
 
 
 @pytest.fixture(autouse=True)
@@ -56,7 +57,7 @@ def run(*args):
 
 def test_fit_prints_the_table_and_writes_json_and_pictures(tmp_path):
     src = bounce_file(tmp_path, sigmas=True)
-    out = run("fit", str(src), "--radius", "0.033", "--restitution", "power",
+    out = run("fit", str(src), *BODY, "--restitution", "power",
               "--json-file", str(tmp_path / "fit.json"), "--plot", str(tmp_path / "fit.png"),
               "--corner", str(tmp_path / "corner.png"))  # fmt: skip
     assert out.returncode == 0, out.stderr
@@ -73,7 +74,7 @@ def test_fit_prints_the_table_and_writes_json_and_pictures(tmp_path):
 
 
 def test_without_sigmas_the_goodness_of_fit_is_not_claimed(tmp_path, capsys):
-    main(["fit", str(bounce_file(tmp_path)), "--radius", "0.033"])
+    main(["fit", str(bounce_file(tmp_path)), *BODY])
     out = capsys.readouterr().out
     assert "not testable without sigmas" in out and "chi2 =" not in out
     assert "one sigma estimated" in out
@@ -120,7 +121,7 @@ def run_main(capsys, *args):
 def test_bad_input_is_one_line(tmp_path, capsys, text, extra, needle):
     src = tmp_path / "bad.csv"
     src.write_text(text)
-    line = run_main(capsys, "fit", src, "--radius", "0.033", *extra)
+    line = run_main(capsys, "fit", src, *BODY, *extra)
     assert needle in line
 
 
@@ -146,15 +147,15 @@ def test_a_bad_row_is_named_by_its_line_in_the_file(tmp_path, capsys, text, extr
     among the data rows."""
     src = tmp_path / "bad.csv"
     src.write_text(text)
-    line = run_main(capsys, "fit", src, "--radius", "0.033", *extra)
+    line = run_main(capsys, "fit", src, *BODY, *extra)
     assert needle in line and "index" not in line
 
 
 def test_usage_errors_are_one_line(tmp_path, capsys):
     src = bounce_file(tmp_path)
-    assert "--radius is needed" in run_main(capsys, "fit", src)
+    assert "--radius is needed" in run_main(capsys, "fit", src, "--body", "solid-sphere")
     assert "--corner needs at least two" in run_main(
-        capsys, "fit", src, "--radius", "0.033", "--fix", "kappa=0.75", "--corner",
+        capsys, "fit", src, *BODY, "--fix", "kappa=0.75", "--corner",
         tmp_path / "c.png")  # fmt: skip
     assert "must end in .png" in run_main(capsys, "fit", src, "--plot", tmp_path / "c.gif")
     assert "not a file" in run_main(capsys, "fit", tmp_path / "nothing.csv")
@@ -163,13 +164,13 @@ def test_usage_errors_are_one_line(tmp_path, capsys):
 
 def test_a_fit_that_does_not_converge_is_an_error(tmp_path, capsys, monkeypatch):
     stall_the_optimizer(monkeypatch)
-    line = run_main(capsys, "fit", bounce_file(tmp_path), "--radius", "0.033")
+    line = run_main(capsys, "fit", bounce_file(tmp_path), *BODY)
     assert "did not converge" in line
 
 
 def test_a_compliance_model_and_the_goodness_of_fit(tmp_path, capsys):
     src = bounce_file(tmp_path, sigmas=True, missing=False)
-    main(["fit", str(src), "--radius", "0.033", "--tangential", "walton"])
+    main(["fit", str(src), *BODY, "--tangential", "walton"])
     out = capsys.readouterr().out
     assert "walton" in out and "beta0" in out
     assert "reduced chi2" in out and "p = " in out and "does not explain" not in out
@@ -190,7 +191,7 @@ def test_parameters_the_data_do_not_separate_are_named(tmp_path, capsys):
     ]
     src = tmp_path / "slide.csv"
     src.write_text("\n".join(lines) + "\n")
-    main(["fit", str(src), "--radius", "0.033"])
+    main(["fit", str(src), *BODY])
     out = capsys.readouterr().out
     assert "not determined locally by these data: mu, kappa" in out
 
@@ -212,6 +213,117 @@ def test_strong_correlations_are_named(tmp_path, capsys):
     lines = [HEADER] + [f"{a!r},{b!r},0,{c!r},{d},{e!r}" for a, b, c, d, e in rows]
     src = tmp_path / "three.csv"
     src.write_text("\n".join(lines) + "\n")
-    main(["fit", str(src), "--radius", "0.033"])
+    main(["fit", str(src), *BODY])
     out = capsys.readouterr().out
     assert "strongly correlated: mu and kappa (r = -0.9" in out
+
+
+def no_spin_file(tmp_path):
+    """Bounces without spin, given or measured: the radius plays no part, the shape does."""
+    vx, vy = np.linspace(0.5, 12.0, 12), np.full(12, -4.0)
+    after = solve(BALL, vx, vy, 0.0, mu=0.35, kappa=0.75).after
+    noise = np.random.default_rng(5).normal(0.0, 0.05, (2, 12))
+    cols = np.stack([vx, vy, after.vx + noise[0], after.vy + noise[1]], axis=-1).tolist()
+    lines = ["vx,vy,omega,after_vx,after_vy"] + [
+        f"{a!r},{b!r},0,{c!r},{d!r}" for a, b, c, d in cols
+    ]
+    path = tmp_path / "nospin.csv"
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_a_fit_needs_its_body(tmp_path, capsys):
+    """No body is assumed: a tennis ball's bounces fitted as a solid sphere's give a wrong
+    mu with a confident interval."""
+    src, flat = bounce_file(tmp_path), no_spin_file(tmp_path)
+    for path in (src, flat):
+        line = run_main(capsys, "fit", path, "--radius", "0.033")
+        assert "a body is needed" in line
+        assert all(option in line for option in ("--ball", "--body", "--gyration"))
+    line = run_main(capsys, "fit", flat, "--gyration", "0.02")
+    assert "--gyration needs --radius" in line
+    line = run_main(capsys, "fit", src, "--ball", "tennis", "--radius", "0.03")
+    assert "--ball" in line and "--radius" in line
+    line = run_main(capsys, "fit", src, "--ball", "tennis", "--body", "ring")
+    assert "one of --ball, --body, --gyration" in line
+
+
+def test_the_body_and_the_law_are_printed_and_stored(tmp_path, capsys):
+    src = bounce_file(tmp_path, sigmas=True)
+    main(["fit", str(src), "--ball", "tennis", "--json-file", str(tmp_path / "fit.json")])
+    out = capsys.readouterr().out
+    assert "fit: rigid, constant kappa" in out
+    r, rho = BALLS["tennis"].radius, BALLS["tennis"].gyration
+    assert f"body: tennis, R = {r:.4g} m, rho = {rho:.4g} m, zeta = {1 + (r / rho) ** 2:.4g}" in out
+    doc = json.loads((tmp_path / "fit.json").read_text())
+    assert doc["model"] == "rigid, constant kappa"
+    assert doc["body"]["name"] == "tennis" and doc["body"]["radius"] == r
+    main(["fit", str(no_spin_file(tmp_path)), "--body", "ring", "--json",
+          str(tmp_path / "ring.json")])  # fmt: skip
+    out = capsys.readouterr().out
+    assert "body: ring, zeta = 2 (its radius plays no part without spin)" in out
+    body = json.loads((tmp_path / "ring.json").read_text())["body"]
+    assert body == {"name": "ring", "radius": None, "gyration": None, "zeta": 2.0}
+
+
+def test_impossible_rebounds_are_named_by_their_lines(tmp_path, capsys):
+    text = HEADER + "\n# row 2 is a comment\n1,-5,0,0.7,3,0\n2,-5,0,1.4,-3,0\n3,-5,0,2.1,8,0\n"
+    src = tmp_path / "bad.csv"
+    src.write_text(text)
+    line = run_main(capsys, "fit", src, "--body", "solid-sphere", "--radius", "0.033")
+    assert line.startswith("spinimpact: error: ")
+    assert "bad.csv: impossible rebound(s)" in line and "index" not in line
+    assert "after_vy = -3 m/s at row 4 (into the surface" in line
+    assert "after_vy = 8 m/s at row 5 (faster than the impact" in line
+
+
+def test_identical_drops_are_refused_on_one_line(tmp_path, capsys):
+    src = tmp_path / "drops.csv"
+    src.write_text("drop_height,rebound_height\n" + "1.0,0.64\n" * 6)
+    line = run_main(capsys, "fit", src, "--drops")
+    assert "the 6 drops show no scatter" in line and "sigma_" in line
+
+
+#: Runs ``spinimpact fit`` as the program does (``main()`` without arguments) and sends
+#: itself a signal just after its two outputs are renamed, or from an exit handler once
+#: ``main`` has returned (the interpreter's shutdown).
+SIGNAL_SCRIPT = """
+import atexit, os, signal, sys
+from spinimpact.cli import main
+from spinimpact.io import atomic
+
+when, signum = sys.argv[1], int(sys.argv[2])
+sys.argv = ["spinimpact", *sys.argv[3:]]
+commit, outputs = atomic._Temporary.commit, []
+
+def renamed(self):
+    commit(self)
+    outputs.append(self.target)
+    if when == "renamed" and len(outputs) == 2:
+        os.kill(os.getpid(), signum)
+
+atomic._Temporary.commit = renamed
+main()
+if when == "shutdown":
+    atexit.register(os.kill, os.getpid(), signum)
+"""
+
+
+@pytest.mark.parametrize("when", ["renamed", "shutdown"])
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_after_the_outputs_are_renamed_exits_128_plus_it(tmp_path, signum, when):
+    """The outputs are in place and complete; the run used to say "no output was changed"
+    (just after the renames) or be killed by the signal (-2, -15) during the shutdown."""
+    src = bounce_file(tmp_path, sigmas=True)
+    outputs = [tmp_path / n for n in ("fit.png", "corner.png")]
+    args = ["fit", str(src), "--body", "solid-sphere", "--radius", "0.033", "--plot",
+            str(outputs[0]), "--corner", str(outputs[1])]  # fmt: skip
+    out = subprocess.run([sys.executable, "-c", SIGNAL_SCRIPT, when, str(int(signum)), *args],
+                         capture_output=True, text=True, timeout=120)  # fmt: skip
+    name = signal.Signals(signum).name
+    assert out.returncode == 128 + signum, out.stderr
+    assert out.stderr == (f"spinimpact: {name} came after the command had finished; its "
+                          "output is complete\n")  # fmt: skip
+    assert all(path.read_bytes()[:4] == b"\x89PNG" for path in outputs)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bounces.csv", "corner.png",
+                                                          "fit.png"]  # fmt: skip

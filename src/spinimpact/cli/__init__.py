@@ -70,8 +70,9 @@ def main(argv: list[str] | None = None) -> None:
     -----
     Exits with status 0 on success, 2 on bad input (one line on stderr, see
     :func:`~spinimpact.cli._common.errors_to_exit_2`), 130 on Ctrl-C (SIGINT) and
-    128 + 15 on SIGTERM. Output files are renamed into place only when the whole
-    command, its standard output included, succeeded
+    128 + 15 on SIGTERM (also when the signal comes after the command has finished and
+    renamed its outputs into place, with a line saying so). Output files are renamed
+    into place only when the whole command, its standard output included, succeeded
     (:func:`~spinimpact.io.atomic.atomic_outputs`): a run that fails or is stopped
     leaves every old output as it was and no temporary file. A signal is recorded,
     and the run stops where stopping is safe (:mod:`spinimpact.io._stop`).
@@ -83,7 +84,9 @@ def main(argv: list[str] | None = None) -> None:
     from ..io._stop import stop_on_signals
     from ..io.atomic import atomic_outputs
 
-    with stop_on_signals(), errors_to_exit_2():
+    # The program (not a call from Python) keeps its handlers: a signal during the shutdown
+    # after a finished command exits 128 + its number rather than killing the process.
+    with stop_on_signals(keep=argv is None), errors_to_exit_2():
         # Any floating-point trouble becomes a clean error rather than inf/NaN in a report.
         with np.errstate(over="raise", divide="raise", invalid="raise"), atomic_outputs():
             cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)

@@ -11,19 +11,31 @@ place), so the clean-up in ``finally`` runs undisturbed. A second signal during 
 critical section raises at once (the way out of a blocked read); the temporary it
 may leave is removed by the next run (:mod:`spinimpact.io.atomic`).
 
+Once the outermost :func:`~spinimpact.io.atomic.atomic_outputs` has renamed every output
+into place (:func:`finished`), a signal no longer says "no output was changed": the process
+exits at once with 128 + the signal's number, one line on stderr saying the command had
+finished. The command line keeps that handler for the rest of its process
+(``stop_on_signals(keep=True)``) and, after a finished run, ends the process once the exit
+handlers (:mod:`atexit`) have run, without the interpreter's module teardown: that takes up
+to a second with SciPy and Matplotlib loaded, Python handles no signal during it, and a
+signal then would kill the process (a status of -2 to its caller instead of 130).
+
 Without :func:`stop_on_signals` (the Python API) nothing is recorded and
 :func:`check` never raises: Ctrl-C is Python's ``KeyboardInterrupt``, as usual.
 """
 
 from __future__ import annotations
 
+import atexit
 import contextlib
+import os
 import signal
+import sys
 import threading
 from collections.abc import Iterator
 from typing import Any
 
-__all__ = ["Stopped", "check", "critical", "stop_on_signals"]
+__all__ = ["Stopped", "check", "critical", "finished", "stop_on_signals"]
 
 _SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM") if hasattr(signal, n))
 
@@ -43,6 +55,8 @@ class _State:
     signum = 0  # the first signal received, 0 if none
     raised = False  # whether a Stopped was raised already (at most one from the handler)
     depth = 0  # critical sections open (temporary outputs alive)
+    finished = False  # every output is in place: a signal now exits at once (finished())
+    installed = False  # stop_on_signals' handlers are in place
 
 
 _state = _State()
@@ -75,7 +89,38 @@ def leave() -> None:
     _state.depth -= 1
 
 
+def finished() -> None:
+    """The run is done and its outputs are in place: a signal from now on (or one recorded
+    while they were renamed) exits at once with status 128 + its number, after one line on
+    stderr. Only under :func:`stop_on_signals`; otherwise it does nothing."""
+    if not _state.installed:
+        return
+    _state.finished = True
+    if _state.signum:
+        _exit(_state.signum)
+
+
+def _exit(signum: int) -> None:
+    name = signal.Signals(signum).name
+    line = f"spinimpact: {name} came after the command had finished; its output is complete\n"
+    os.write(2, line.encode())
+    os._exit(128 + signum)  # nothing is left to clean up; skip the interpreter's shutdown
+
+
+def _skip_teardown() -> None:
+    """At exit after a finished run: flush the standard streams and end the process with
+    status 0, skipping the module teardown during which no signal handler runs."""
+    if not _state.finished:
+        return
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):  # closed or broken: nothing more to say
+            stream.flush()
+    os._exit(0)
+
+
 def _handler(signum: int, _frame: Any) -> None:
+    if _state.finished:
+        _exit(signum)
     second = bool(_state.signum)
     if not second:
         _state.signum = signum
@@ -85,21 +130,30 @@ def _handler(signum: int, _frame: Any) -> None:
 
 
 @contextlib.contextmanager
-def stop_on_signals() -> Iterator[None]:
+def stop_on_signals(*, keep: bool = False) -> Iterator[None]:
     """Handle SIGINT and SIGTERM as the module's notes describe, then restore the handlers.
 
-    Outside the main thread (where handlers cannot be installed) it does nothing.
+    With ``keep=True`` (the command line's own process, which ends next) the handlers stay
+    when the block ends, and after a :func:`finished` run the process ends once the exit
+    handlers have run, without the module teardown: a signal until then exits with 128 +
+    its number instead of killing the process. Outside the main thread (where handlers
+    cannot be installed) it does nothing.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
     previous = {s: signal.getsignal(s) for s in _SIGNALS}
-    _state.signum, _state.raised, _state.depth = 0, False, 0
+    _state.signum, _state.raised, _state.depth, _state.finished = 0, False, 0, False
     for s in _SIGNALS:
         signal.signal(s, _handler)
+    _state.installed = True
+    if keep:  # registered first, so it runs after the handlers the run's imports register
+        atexit.register(_skip_teardown)
     try:
         yield
     finally:
-        for s, handler in previous.items():
-            signal.signal(s, handler)
-        _state.signum, _state.raised = 0, False
+        if not keep:
+            _state.installed = False
+            for s, handler in previous.items():
+                signal.signal(s, handler)
+            _state.signum, _state.raised, _state.finished = 0, False, False

@@ -205,7 +205,9 @@ def atomic_outputs() -> Iterator[None]:
     (:mod:`spinimpact.io._stop`) came, they are renamed onto their targets one after
     the other; otherwise all are removed and every old output stays as it was. The
     command line runs each command inside it, so a command that fails after writing
-    (its standard output full, say) changes no file.
+    (its standard output full, say) changes no file. When the outermost block has
+    renamed them all, a signal no longer stops the run but ends the process with
+    128 + its number (:func:`spinimpact.io._stop.finished`).
 
     Raises
     ------
@@ -217,9 +219,12 @@ def atomic_outputs() -> Iterator[None]:
     try:
         yield
         _stop.check()
-        while pending:
-            pending[0].commit()
-            pending.pop(0)
+        with _stop.critical():  # a signal while renaming is recorded, then acted on
+            while pending:
+                pending[0].commit()
+                pending.pop(0)
+            if len(_transactions) == 1:  # the outermost block: the run's outputs are in place
+                _stop.finished()
     finally:
         _transactions.pop()
         for temporary in pending:
