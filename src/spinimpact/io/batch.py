@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import contextlib
 import functools
-import json
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -33,8 +32,7 @@ import numpy as np
 from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import solve
-from ..model.registry import Problem, detect, problems
-from ..model.registry import problem as get_problem
+from ..model.registry import Problem
 from ._arrow_csv import csv_chunks as arrow_csv_chunks
 from ._background import BackgroundRows
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
@@ -53,49 +51,7 @@ from ._tables import (
 from .atomic import atomic_path
 from .batch_columns import RESULT_COLUMNS, column_kinds, result_columns
 from .planar_batch import PlanarBatch, body_kind
-from .problem_batch import ProblemBatch
-
-#: The problems solved by their own chunk solvers (this module's and
-#: :class:`~spinimpact.io.planar_batch.PlanarBatch`), kept for their speed and messages;
-#: every other registered problem goes through :class:`~spinimpact.io.problem_batch.ProblemBatch`.
-_TWO_D = ("paper", "planar", "pendulum")
-
-
-def units_file(output: str | os.PathLike[str]) -> Path:
-    """The side file that names the units of a CSV output's columns: ``out.csv`` ->
-    ``out.units.json``."""
-    output = Path(output)
-    return output.with_name(f"{output.stem}.units.json")
-
-
-def write_units(path: Path, chosen: Problem, columns: Sequence[str]) -> None:
-    """Write the units side file of a CSV output: the problem and each column's SI unit
-    (``null`` for text, flags and columns the package does not know)."""
-    units = {name: chosen.unit(name) for name in columns}
-    text = json.dumps({"problem": chosen.name, "summary": chosen.summary, "units": units},
-                      indent=2)  # fmt: skip
-    path.write_text(text + "\n", encoding="utf-8")
-
-
-def _problem_of(header: list[str], name: str | Problem | None) -> Problem:
-    """The problem a file holds: ``name`` if given (checked against the columns), else the
-    one its columns describe (:func:`spinimpact.detect`)."""
-    try:
-        found = detect(header)
-    except ValueError as exc:
-        if name is None:
-            if not any(c in header for p in problems() if p.name not in _TWO_D for c in p.marks):
-                body_kind(header)  # the planar files' own, more detailed, messages first
-            raise BatchError(str(exc)) from None
-        found = None
-    chosen = found if name is None else get_problem(name)
-    if found is not None and chosen is not found:
-        raise BatchError(f"the columns of the file describe problem {found.name!r} "
-                         f"({found.summary}), not {chosen.name!r}")  # fmt: skip
-    if chosen.name in _TWO_D:
-        body_kind(header)  # its checks of a planar file's geometry
-    return chosen
-
+from .problem_batch import TWO_D, ProblemBatch, problem_of, units_file, write_units
 
 __all__ = [
     "RESULT_COLUMNS",
@@ -378,11 +334,11 @@ def run_batch(
     read = parquet_chunks if fmt_in == "parquet" else arrow_csv_chunks  # pyarrow's, or Python's
     chunks = read(source, int(chunk_size), skip, advance)
     header = next(chunks)
-    chosen = _problem_of(header, problem)
+    chosen = problem_of(header, problem)
     kind = chosen.name
     if check_kind is not None:
         check_kind(kind)
-    if kind not in _TWO_D:
+    if kind not in TWO_D:
         plan: Any = ProblemBatch(chosen, header, skip, defaults)
         kinds, numeric, solve_chunk = plan.kinds, plan.numeric, plan.solve
     elif kind == "paper":

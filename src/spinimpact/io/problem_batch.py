@@ -17,19 +17,66 @@ row.
 from __future__ import annotations
 
 import functools
+import json
+import os
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..model.registry import Problem
+from ..model.registry import Problem, detect, problems
+from ..model.registry import problem as get_problem
 from ._tables import BatchError, Chunk, check_header, chunk_numbers
+from .planar_batch import body_kind
 
-__all__ = ["ProblemBatch", "result_kinds"]
+__all__ = ["ProblemBatch", "TWO_D", "problem_of", "result_kinds", "units_file", "write_units"]
 
 _INDEX = re.compile(r" \(first offending index [0-9, ()]*\)")
 _KIND = {"b": "flag", "U": "text", "S": "text", "O": "text"}
+
+
+#: The problems solved by their own chunk solvers (this module's and
+#: :class:`~spinimpact.io.planar_batch.PlanarBatch`), kept for their speed and messages;
+#: every other registered problem goes through :class:`~spinimpact.io.problem_batch.ProblemBatch`.
+TWO_D = ("paper", "planar", "pendulum")
+
+
+def units_file(output: str | os.PathLike[str]) -> Path:
+    """The side file that names the units of a CSV output's columns: ``out.csv`` ->
+    ``out.units.json``."""
+    output = Path(output)
+    return output.with_name(f"{output.stem}.units.json")
+
+
+def write_units(path: Path, chosen: Problem, columns: Sequence[str]) -> None:
+    """Write the units side file of a CSV output: the problem and each column's SI unit
+    (``null`` for text, flags and columns the package does not know)."""
+    units = {name: chosen.unit(name) for name in columns}
+    text = json.dumps({"problem": chosen.name, "summary": chosen.summary, "units": units},
+                      indent=2)  # fmt: skip
+    path.write_text(text + "\n", encoding="utf-8")
+
+
+def problem_of(header: list[str], name: str | Problem | None) -> Problem:
+    """The problem a file holds: ``name`` if given (checked against the columns), else the
+    one its columns describe (:func:`spinimpact.detect`)."""
+    try:
+        found = detect(header)
+    except ValueError as exc:
+        if name is None:
+            if not any(c in header for p in problems() if p.name not in TWO_D for c in p.marks):
+                body_kind(header)  # the planar files' own, more detailed, messages first
+            raise BatchError(str(exc)) from None
+        found = None
+    chosen = found if name is None else get_problem(name)
+    if found is not None and chosen is not found:
+        raise BatchError(f"the columns of the file describe problem {found.name!r} "
+                         f"({found.summary}), not {chosen.name!r}")  # fmt: skip
+    if chosen.name in TWO_D:
+        body_kind(header)  # its checks of a planar file's geometry
+    return chosen
 
 
 @functools.cache
