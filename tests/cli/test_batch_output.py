@@ -45,6 +45,7 @@ def one_error_line(run):
 
 @pytest.mark.skipif(not HAS_FULL, reason="needs /dev/full")
 @pytest.mark.parametrize("command", ["batch", "report"])
+@pytest.mark.slow
 def test_a_full_standard_output_leaves_the_old_output(tmp_path, command):
     keep = tmp_path / ("keep.csv" if command == "batch" else "keep.html")
     keep.write_text("old")

@@ -55,6 +55,7 @@ def run(*args):
     return subprocess.run(cmd, capture_output=True, text=True, timeout=120)
 
 
+@pytest.mark.slow
 def test_fit_prints_the_table_and_writes_json_and_pictures(tmp_path):
     src = bounce_file(tmp_path, sigmas=True)
     out = run("fit", str(src), *BODY, "--restitution", "power",
@@ -311,6 +312,7 @@ if when == "shutdown":
 
 @pytest.mark.parametrize("when", ["renamed", "shutdown"])
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+@pytest.mark.slow
 def test_a_signal_after_the_outputs_are_renamed_exits_128_plus_it(tmp_path, signum, when):
     """The outputs are in place and complete; the run used to say "no output was changed"
     (just after the renames) or be killed by the signal (-2, -15) during the shutdown."""

@@ -42,6 +42,7 @@ def png_size(path):
     return struct.unpack(">II", head[16:24])
 
 
+@pytest.mark.slow
 def test_map_at_the_largest_resolution_runs_in_bounded_memory(tmp_path):
     """--resolution 4000 once needed 10 GB (the whole Impact of 16 million points); the
     picture has a few hundred pixels per panel, so it now fits in 1 GiB of address space."""
@@ -51,6 +52,7 @@ def test_map_at_the_largest_resolution_runs_in_bounded_memory(tmp_path):
     assert png_size(target) == (750, 460)
 
 
+@pytest.mark.slow
 def test_map_computes_no_more_points_than_a_panel_has_pixels():
     body = Body.solid_sphere(mass=1.0, radius=0.1)
     fig = maps.plot_map(body, mu=0.2, kappa=0.8, n=4000, dpi=50)

@@ -52,6 +52,7 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
+@pytest.mark.slow
 def test_batch_of_rods_from_the_shell(tmp_path):
     rows = [[1, 0.08, -0.35, -0.35, 1, -1, 0, "newton"], [2, 0.1, 0.2, -0.3, 0, -2, 3, ""]]
     src = write_csv(tmp_path / "rods.csv", ROD, rows)

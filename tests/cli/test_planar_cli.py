@@ -93,6 +93,7 @@ def test_json_equals_the_python_api(body):
     assert got["law"] == law and got["body"]["name"] == make().name
 
 
+@pytest.mark.slow
 def test_report_and_both_figures(tmp_path):
     routh, laws = tmp_path / "routh.png", tmp_path / "laws.svg"
     routh.write_bytes(b"previous")
@@ -194,6 +195,7 @@ def test_help_names_the_units(run_main):
         assert needle in out, needle
 
 
+@pytest.mark.slow
 def test_html_page_is_written_atomically(tmp_path):
     page = tmp_path / "rod.html"
     page.write_text("previous")

@@ -24,6 +24,7 @@ def test_a_grazing_sphere_is_refused_as_solve_refuses_vy(cli):
     assert "division" not in err
 
 
+@pytest.mark.slow
 def test_a_map_of_a_tiny_body_is_drawn(cli, tmp_path):
     """The maps are dimensionless: a body of 1e-49 m gets the same map as any other (its
     spins R omega/|vy| = 3 used to overflow a float32 cast)."""

@@ -27,6 +27,7 @@ def _row(stdout, label):
     ]
 
 
+@pytest.mark.slow
 def test_default_compares_with_solves_default():
     """The issue: simulate's default was elastic Hertz (vy+ = 4 m/s) where solve's default
     kappa = 0.8 gives 3.2; now the default calibrates the law to kappa = 0.8."""

@@ -136,6 +136,7 @@ def test_jax_jit(case_arrays, jax):
         np.testing.assert_allclose(np.asarray(g) / s, e / s, rtol=0, atol=1e-13)
 
 
+@pytest.mark.slow
 def test_jax_gradients_are_the_closed_form_derivatives(jax):
     """jax.grad through the kernels: in a sliding impact vx+ = vx - (1+kappa) mu |vy|
     sign(u), so d vx+/d vx = 1 and d vx+/d omega = 0; in a sticking one

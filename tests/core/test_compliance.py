@@ -194,6 +194,7 @@ def test_stronge_sliding_throughout_is_the_sliding_rebound():
     np.testing.assert_allclose(got.slip_after[smooth], slip[smooth], rtol=1e-15)  # u0/v*v
 
 
+@pytest.mark.slow
 def test_stronge_rigid_limit_approaches_the_rigid_law():
     slip, vy, zeta, mu, kappa = (a[:40] for a in _cases())
     rigid = impulse.rebound_slip(slip, vy, zeta, mu, kappa)

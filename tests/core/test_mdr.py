@@ -24,6 +24,7 @@ def _random(n, seed):
             rng.uniform(0.05, 0.8, n), rng.choice([1.0, 0.9, 0.6], n))  # fmt: skip
 
 
+@pytest.mark.slow
 def test_the_default_resolution_is_converged():
     """Defaults (256 springs, 2048 steps) against four times the springs and the steps:
     within 1e-5 of |v_n| (measured 2.2e-6 on these 40 impacts) and the gap falls as the

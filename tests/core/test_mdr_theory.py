@@ -472,6 +472,7 @@ def test_trace_energy_never_increases_and_balances(slip, mu, kappa):
     kappa=st.floats(0.3, 1.0),
     ratio=st.floats(0.5, 1.0),
 )
+@pytest.mark.slow
 def test_energy_and_friction_bounds(slip, speed, zeta, mu, kappa, ratio):
     """|slip_after| <= |slip| (the tangential energy never grows and the springs end
     unloaded), and the friction impulse |slip_after - slip|/zeta never exceeds mu times the

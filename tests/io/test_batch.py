@@ -75,6 +75,7 @@ def expected(row):
     return solve(body, vx, vy, omega, mu=mu, kappa=kappa)
 
 
+@pytest.mark.slow
 def test_csv_round_trip_equals_python_api(mixed, tmp_path):
     path, rows = mixed
     out = tmp_path / "out.csv"
@@ -103,6 +104,7 @@ def test_csv_round_trip_equals_python_api(mixed, tmp_path):
         assert line["rolling"] == ("true" if imp.outcome.rolling else "false")
 
 
+@pytest.mark.slow
 def test_bad_row_stops_the_run_and_keeps_the_old_output(tmp_path):
     src, out = tmp_path / "in.csv", tmp_path / "out.csv"
     write_csv(

@@ -42,6 +42,7 @@ _CHILD = textwrap.dedent(
 
 
 @pytest.mark.skipif(not os.path.exists("/proc/self/status"), reason="needs Linux /proc")
+@pytest.mark.slow
 def test_memory_is_bounded_by_the_chunk_whatever_the_cells_hold(tmp_path):
     # 50,000 rows, 10,000 a chunk; one cell of an extra column holds 100,000 characters.
     # A fixed-width array of one chunk would need 10,000 x 4 x 100,000 x 4 bytes = 14.9 GiB.

@@ -103,6 +103,7 @@ def sticking(seed):
 
 
 @pytest.mark.parametrize("seed", [0, 2])
+@pytest.mark.slow
 def test_mu_stays_in_solves_domain_when_every_bounce_sticks(seed):
     """The optimizer used to step past mu = 1e6 (solve's bound), and the fit failed with
     solve's "mu must be <= 1e6"; now mu is bounded there, and the data's lower bound on

@@ -165,6 +165,7 @@ def test_pendulum_geometry_and_locked_regime():
     assert "no law gives a rebound" in text
 
 
+@pytest.mark.slow
 def test_the_laws_agree_or_not():
     differ = planar_report_html(IMPACTS["rod, Poisson"]())
     assert "so the three laws end it at different impulses" in differ

@@ -73,6 +73,7 @@ def _terminal_rows(text):
 
 
 @pytest.mark.parametrize("name", list(CASES))
+@pytest.mark.slow
 def test_terminal_and_page_show_the_same_rows(name):
     from spinimpact.viz.html import impact_report_html
 

@@ -26,6 +26,7 @@ def _terminal(imp, particle=None):
 
 
 @pytest.mark.parametrize("name", HOSTILE)
+@pytest.mark.slow
 def test_body_names_are_text_in_every_report(name):
     body = Body(mass=1.0, radius=0.1, gyration=0.05, name=name)
     imp = solve(body, 3.0, -4.0, 10.0, mu=0.2, kappa=0.8)
@@ -37,6 +38,7 @@ def test_body_names_are_text_in_every_report(name):
     assert "&lt;b&gt;x&lt;/b&gt; &amp; $a_b$" in page if "<" in name else name in page
 
 
+@pytest.mark.slow
 def test_figure_titles_show_a_dollar_in_a_name_as_a_dollar(tmp_path):
     from spinimpact.viz.plots import plot_energy, plot_history, plot_routh
 
@@ -61,6 +63,7 @@ def test_head_on_bounce_without_spin_says_no_slip_before_or_after():
     assert "Fig. 5b" not in energy.note and "end of compression" in energy.note
 
 
+@pytest.mark.slow
 def test_frictionless_title_and_summary():
     imp = solve(Body.ring(mass=1.0, radius=0.1), 0.5, -1.0, 3.0, mu=0.0, kappa=1.0)
     text = _terminal(imp)
