@@ -1,11 +1,20 @@
-# spinimpact: the two commands a newcomer needs are `make demo` and `make test`.
+# spinimpact: the two commands a newcomer needs are `make demo` and `make test`
+# (`make check`: the quick subset of the tests; `make help`: every command).
 PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 BASE   := $(VENV)/.installed-base
+# Where `make images` and `make validation` draw their figures: git-ignored folders, so a
+# plain run never touches a tracked file. `make images IMAGES=docs/images` and
+# `make validation VALIDATION=docs/images` refresh the figures the docs show.
+IMAGES     ?= build/images
+VALIDATION ?= build/validation
 
-.PHONY: demo test bench lint images validation clean
+.PHONY: help demo test check bench lint images validation clean
+
+help:  ## list these commands
+	@awk -F':.*## ' '/^[a-z]+:.*## / {printf "  make %-11s %s\n", $$1, $$2}' $(firstword $(MAKEFILE_LIST))
 
 $(PY):
 	$(PYTHON) -m venv $(VENV)
@@ -24,24 +33,28 @@ $(STAMP): pyproject.toml | $(PY)
 demo: $(BASE)  ## solve the documented default impact and print the report
 	$(VENV)/bin/spinimpact solve
 
-test: $(STAMP)  ## run the whole test suite
+test: $(STAMP)  ## run the whole test suite (what CI runs)
 	$(PY) -m pytest
+
+check: $(STAMP)  ## the everyday quick subset: every test but the slow and browser ones
+	$(PY) -m pytest -m "not slow and not browser"
 
 bench: $(STAMP)  ## print benchmark ratios (not part of the tests)
 	$(PY) -m benchmarks.bench
 
-images: $(STAMP)  ## regenerate the README's figures in docs/images
-	$(VENV)/bin/spinimpact map --output docs/images/map.png --resolution 800 --dpi 80
-	$(VENV)/bin/spinimpact figures --output-dir docs/images --dpi 80
-	$(PY) docs/scripts/convergence.py docs/images/convergence.png
-	$(PY) docs/scripts/engines.py docs/images/engines.png
-	$(VENV)/bin/spinimpact planar --body rod --orientation-deg 45 --mu 0.3 --kappa 0.8 --plot docs/images/routh_planar.png --dpi 80 > /dev/null
-	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot docs/images/planar_map.png --resolution 300 --dpi 80 > /dev/null
-	$(PY) docs/scripts/fit_kharaz.py docs/images/fit_kharaz.png
-	$(PY) docs/scripts/flight.py docs/images
+images: $(STAMP)  ## draw the docs' figures into build/images (git-ignored); IMAGES=docs/images refreshes the published ones
+	mkdir -p $(IMAGES)
+	$(VENV)/bin/spinimpact map --output $(IMAGES)/map.png --resolution 800 --dpi 80
+	$(VENV)/bin/spinimpact figures --output-dir $(IMAGES) --dpi 80
+	$(PY) docs/scripts/convergence.py $(IMAGES)/convergence.png
+	$(PY) docs/scripts/engines.py $(IMAGES)/engines.png
+	$(VENV)/bin/spinimpact planar --body rod --orientation-deg 45 --mu 0.3 --kappa 0.8 --plot $(IMAGES)/routh_planar.png --dpi 80 > /dev/null
+	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot $(IMAGES)/planar_map.png --resolution 300 --dpi 80 > /dev/null
+	$(PY) docs/scripts/fit_kharaz.py $(IMAGES)/fit_kharaz.png
+	$(PY) docs/scripts/flight.py $(IMAGES)
 
-validation: $(STAMP)  ## every model against Kharaz et al. (2001); the Chung & Ooi (2011) tests
-	$(PY) -m benchmarks.validation kharaz --output docs/images
+validation: $(STAMP)  ## every model against Kharaz et al. (2001) and the Chung & Ooi (2011) tests; figures in build/validation (VALIDATION=docs/images refreshes the published ones)
+	$(PY) -m benchmarks.validation kharaz --output $(VALIDATION)
 	for t in 1 2 3 4 5 6; do $(PY) -m benchmarks.validation chung-ooi --test $$t || exit 1; done
 
 lint: $(STAMP)

@@ -2,7 +2,8 @@
 
 * ``kharaz``: every model against Kharaz et al. (2001); prints the error table of
   ``docs/validation.md``, and writes its figures where ``--output DIR`` is given only
-  (``make validation`` gives docs/images), so a plain run leaves the tracked figures alone.
+  (``make validation`` gives the git-ignored build/validation, ``make validation
+  VALIDATION=docs/images`` the published figures), so a plain run leaves them alone.
 * ``chung-ooi --test N``: Chung & Ooi (2011) Test N (1-6), the benchmark's quantities
   beside the reference.
 """

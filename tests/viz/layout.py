@@ -15,9 +15,11 @@ APART = 0.04
 
 
 def draw(fig):
-    """Draw ``fig`` without a display; return its renderer."""
+    """Draw ``fig`` without a display at 40 dpi (the layout in inches does not depend on
+    it; drawing is faster); return its renderer."""
     if fig.canvas is None or not hasattr(fig.canvas, "get_renderer"):
         FigureCanvasAgg(fig)
+    fig.set_dpi(40)
     fig.canvas.draw()
     return fig.canvas.get_renderer()
 
