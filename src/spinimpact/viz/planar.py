@@ -149,7 +149,7 @@ def plot_routh_planar(imp: PlanarImpact, n: int = 401) -> Figure:
     if math.isfinite(ts) and ts <= t1:
         mark = ("X", {"color": "C3", "ms": 14}) if reverses else ("D", {"color": "C2"})
         events.insert(1, (ts, r"\tau_*", "slip stops" + " and reverses" * reverses, *mark))
-    for group in same_points(events, 1e-9 * t1):
+    for group in reversed(same_points(events, 1e-9 * t1)):  # in the order they happen
         tau = group[0][0]
         names = " = ".join(e[1] for e in reversed(group))
         whats = ", ".join(e[2] for e in reversed(group))
