@@ -65,14 +65,14 @@ def test_spring_rule_reaches_the_law(capsys):
 
 
 def test_duration_in_microseconds_and_rigid_beta_exact(capsys):
-    """A 6 us contact reads in us, and the rigid law's beta of a sticking impact is 0
+    """A 6 µs contact reads in µs, and the rigid law's beta of a sticking impact is 0
     (not the 1e-17 its rounded velocities give); a sliding one keeps -u+/u-."""
     import re
 
     main([*KHARAZ, "--tangential", "mindlin"])
     out = capsys.readouterr().out
-    duration = re.search(r"contact duration ([\d.]+) us,", out)
-    assert duration is not None and 5 < float(duration.group(1)) < 7  # Hertz: 6.2 us
+    duration = re.search(r"contact duration ([\d.]+) µs,", out)
+    assert duration is not None and 5 < float(duration.group(1)) < 7  # Hertz: 6.2 µs
     beta = next(x for x in out.splitlines() if x.startswith("beta = -u+/u-")).split()
     assert beta[-1] == "0" and float(beta[-2]) > 0.3
     main([*KHARAZ, "--tangential", "mindlin", "--mu", "0.01"])  # slides throughout

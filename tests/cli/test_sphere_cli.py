@@ -280,6 +280,6 @@ def test_batch_through_the_command_line(cli, tmp_path):
     pairs.write_text("vx,vy,vz,wx,wy,wz,vx2,vy2,vz2,wx2,wy2,wz2\n2,0,0,0,0,-20,0,0,0,0,0,0\n")
     status, out, err = cli("pair", "--batch", pairs, "--output", target, "--normal", "-1,0,0")
     assert status == 0, err
-    assert "1 rows (pairs of spheres)" in out
+    assert "1 row (pairs of spheres)" in out
     status, _, err = cli("sphere", "--batch", pairs, "--output", target)
     assert status == 2 and "describe problem 'pair'" in err

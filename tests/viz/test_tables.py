@@ -192,15 +192,15 @@ def test_every_label_has_its_typeset_form():
 
 
 def test_times_in_a_unit_that_suits_them():
-    """A 6 us Hertz contact is printed in us (not '0.00618 ms'), with its stick time."""
+    """A 6 µs Hertz contact is printed in µs (not '0.00618 ms'), with its stick time."""
     from spinimpact.dynamics import HertzContact
     from spinimpact.viz.tables import duration
 
     assert [duration(t) for t in (6.18087e-6, 9.99e-4, 1e-3, 0.5, 1.0, -0.0)] == [
-        "6.18087 us", "999 us", "1 ms", "500 ms", "1 s", "0 us"]  # fmt: skip
+        "6.18087 µs", "999 µs", "1 ms", "500 ms", "1 s", "0 µs"]  # fmt: skip
     ball = Body.solid_sphere(mass=2.618e-4, radius=0.0025)
     law = HertzContact(youngs_modulus=3.8e11, poisson_ratio=0.23, radius=0.0025)
     sim = simulate(ball, 1.334, -3.665, 0.0, mu=0.092, contact=law)
     text = _terminal(print_simulation, sim)
-    assert f"contact duration {sim.contact_duration * 1e6:.6g} us," in text
-    assert f"slip stops at t = {sim.stick_time * 1e6:.6g} us" in text
+    assert f"contact duration {sim.contact_duration * 1e6:.6g} µs," in text
+    assert f"slip stops at t = {sim.stick_time * 1e6:.6g} µs" in text

@@ -22,13 +22,13 @@ __all__ = ["print_sphere_report", "report"]
 def print_sphere_report(imp: SphereImpact | PairImpact) -> None:
     """The terminal report: the headline, then the tables of
     :func:`~spinimpact.viz.sphere.sphere_tables` (Rich)."""
-    from rich.console import Console
     from rich.text import Text
 
     from ..viz.report import _rich
+    from ..viz.report import console as report_console
     from ..viz.sphere import headline, sphere_tables
 
-    console = Console(highlight=False, soft_wrap=True)
+    console = report_console()
     pair = isinstance(imp, PairImpact)
     title = f"Two spheres: {imp.ball1.name} on {imp.ball2.name}" if pair else (
         f"Sphere on a surface, in 3D: {imp.body.name}")  # fmt: skip

@@ -17,6 +17,7 @@ from typing import Any
 
 import click
 
+from .._words import count
 from ..model.planar import LAWS
 from ..model.registry import problem as get_problem
 from ..model.registry import problems
@@ -185,4 +186,4 @@ def batch_command(
             raise click.UsageError(f"--fields: {exc}") from None
     note = f" ({summary.skipped} with errors: see the 'error' column)" if summary.skipped else ""
     # With --output -, standard output holds the rows: the summary goes to stderr.
-    click.echo(f"wrote {summary.rows} rows to {summary.output}{note}", err=output == "-")
+    click.echo(f"wrote {count(summary.rows, 'row')} to {summary.output}{note}", err=output == "-")

@@ -18,6 +18,7 @@ from typing import Any
 import click
 import numpy as np
 
+from .._words import count
 from ..model.flight import AIR_DENSITY, flight
 from ..model.presets import BALLS, GROUNDS
 from ..model.spin_axis import parse_spin_axis
@@ -127,25 +128,24 @@ def _wall(o: dict) -> Any:
 
 
 def _print_one(f: Any) -> None:
-    from rich.console import Console
-
     from ..viz.flight import flight_tables
-    from ..viz.report import _rich
+    from ..viz.report import _rich, console
 
-    console = Console(highlight=False, soft_wrap=True)
+    out = console()
     bounces, summary = flight_tables(f)
-    console.print(_rich(bounces))
-    console.print()
-    console.print(_rich(summary))
+    out.print(_rich(bounces))
+    out.print()
+    out.print(_rich(summary))
 
 
 def _print_many(f: Any) -> None:
-    from rich.console import Console
     from rich.table import Table
     from rich.text import Text
 
+    from ..viz.report import console
+
     b = f.bounces
-    table = Table(title=Text(f"{f.shape[0]} {f.ball.name} balls on {f.ground.name}"),
+    table = Table(title=Text(f"{count(f.shape[0], f'{f.ball.name} ball')} on {f.ground.name}"),
                   title_justify="left", show_edge=False)  # fmt: skip
     for i, head in enumerate(("quantity", "mean", "sd", "min", "max")):
         table.add_column(head, justify="left" if i == 0 else "right")
@@ -160,7 +160,7 @@ def _print_many(f: Any) -> None:
         x = x[~np.isnan(x)]
         stats = [f"{s:.4g}" for s in (x.mean(), x.std(), x.min(), x.max())] if x.size else ["-"] * 4
         table.add_row(Text(name), *stats)
-    Console(highlight=False, soft_wrap=True).print(table)
+    console().print(table)
 
 
 @click.command("flight")

@@ -113,7 +113,7 @@ def map_command(output: str, extent: float, resolution: int, dpi: int, **options
         fig.savefig(image, format=fmt, dpi=dpi)
     with atomic_path(output) as tmp:
         tmp.write_bytes(image.getbuffer())
-    click.echo(output)
+    click.echo(f"wrote {output}")
 
 
 #: The values of the paper's figures, used for every option of ``figures`` not given.
@@ -201,4 +201,4 @@ def figures_command(ctx: click.Context, output: str, fmt: str, dpi: int, **o: An
         target = folder / f"{name}.{fmt}"
         with atomic_path(target) as tmp:
             (fig or paper_figure(name)).savefig(tmp, format=fmt, dpi=dpi)
-        click.echo(str(target))
+        click.echo(f"wrote {target}")

@@ -145,4 +145,4 @@ def report_command(
         page = impact_report_html(solve_options(options), _particle(options))
     with atomic_path(output) as tmp:
         tmp.write_text(page, encoding="utf-8")
-    click.echo(output)
+    click.echo(f"wrote {output}")

@@ -23,6 +23,7 @@ from typing import Any
 import click
 import numpy as np
 
+from .._words import count
 from ..model.body import Body, check_sphere
 from ..model.pair import solve_pair
 from ..model.presets import BALLS, GROUNDS
@@ -257,7 +258,7 @@ def _batch(ctx: click.Context, pair: bool, o: dict, single: tuple[str, ...]) -> 
         )  # fmt: skip
     note = f" ({summary.skipped} with errors: see the 'error' column)" if summary.skipped else ""
     what = "pairs of spheres" if summary.kind == "pair" else "spheres"
-    click.echo(f"wrote {summary.rows} rows ({what}) to {summary.output}{note}")
+    click.echo(f"wrote {count(summary.rows, 'row')} ({what}) to {summary.output}{note}")
     click.echo(
         f"spinimpact: warning: '{command} --batch' is deprecated; use 'spinimpact batch "
         f"FILE --output OUT' (the file's columns say it holds {command}s)",

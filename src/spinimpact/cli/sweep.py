@@ -24,6 +24,7 @@ from typing import Any
 import click
 
 from .._long import ANNOUNCE_SECONDS, REFUSE_SECONDS
+from .._words import count
 from ..model.planar import LAWS
 from ._common import DEFAULTS, body_options, make_body, progress
 from ._compliance import sweep_class, tangential_law, tangential_options
@@ -143,7 +144,7 @@ def _refuse_what_cannot_fit(cost: Any, dask: bool) -> None:
     if problems:
         raise click.ClickException(
             f"this sweep cannot run as asked: {'; '.join(problems)} (estimated from its first "
-            f"{cost.measured_points:,} points; --force runs it anyway)"
+            f"{count(cost.measured_points, 'point')}; --force runs it anyway)"
         )
 
 
@@ -393,7 +394,7 @@ def sweep_command(
     client = _dask_client(dask_address)
     try:
         with progress() as bar:
-            task = bar.add_task(f"{sweep.size:,} points", total=sweep.chunks)
+            task = bar.add_task(count(sweep.size, "point"), total=sweep.chunks)
             result = run_sweep(
                 sweep,
                 histogram=hist,
@@ -413,15 +414,15 @@ def sweep_command(
     about = f" ({body.name}, {o['law']} law)" if o.get("planar") else ""
     about = f" ({sweep.body.name})" if o.get("sphere") else about
     about = f" (problem {o['problem']})" if o.get("problem") else about
-    click.echo(f"{result.points:,} points{about}")
+    click.echo(f"{count(result.points, 'point')}{about}")
     width = max(map(len, result.regimes)) + 1
     for name, fraction in result.regime_fractions.items():
         click.echo(f"  {name:{width}s} {fraction:.6f}")
     if result.histogram is not None:
         click.echo(f"histogram of {hist[0]}:")
-        for lo, hi, count in zip(
+        for lo, hi, n in zip(
             result.bin_edges[:-1], result.bin_edges[1:], result.histogram, strict=True
         ):
-            click.echo(f"  [{lo:.6g}, {hi:.6g})  {count}")
+            click.echo(f"  [{lo:.6g}, {hi:.6g})  {n}")
     if output:
         click.echo(f"wrote {output}")

@@ -28,6 +28,7 @@ from .. import _long as _trials
 from .. import core
 from .._long import duration_text
 from .._validation import require
+from .._words import count
 from ._fields import DEFAULT_FIELDS, TableColumns, npy_encoded_size, plan
 
 __all__ = [
@@ -234,7 +235,7 @@ class SweepEstimate:
         out = []
         if self.available_memory is not None and self.chunk_memory > self.available_memory:
             out.append(
-                f"a chunk of {self.chunk_points:,} points needs about "
+                f"a chunk of {count(self.chunk_points, 'point')} needs about "
                 f"{size_text(self.chunk_memory)} of memory and {size_text(self.available_memory)}"
                 " is available: use a smaller chunk size"
             )
@@ -244,16 +245,18 @@ class SweepEstimate:
                 f"{size_text(self.free_disk)} is free on its disk"
             )
         if max_seconds is not None and self.seconds > max_seconds:  # False for NaN
-            out.append(f"{self.points:,} points would take about {duration_text(self.seconds)}")
+            out.append(
+                f"{count(self.points, 'point')} would take about {duration_text(self.seconds)}"
+            )
         return out
 
     def __str__(self) -> str:
         output = f", {size_text(self.output_bytes)} of output" if self.output_bytes else ""
         took = "" if math.isnan(self.seconds) else f"about {duration_text(self.seconds)} here, "
         measured = self.measured_points
-        on = f" (measured on the sweep's first {measured:,} points)" if measured else ""
+        on = f" (measured on the sweep's first {count(measured, 'point')})" if measured else ""
         return (
-            f"{self.points:,} points in {self.chunks:,} chunk{'s' * (self.chunks != 1)}: "
+            f"{count(self.points, 'point')} in {count(self.chunks, 'chunk')}: "
             f"{took}{size_text(self.chunk_memory)} of memory a chunk{output}{on}"
         )
 

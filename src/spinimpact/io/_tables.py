@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from .._validation import require, row_problems
+from .._words import count
 
 __all__ = [
     "SUFFIXES",
@@ -146,7 +147,7 @@ def csv_chunks(
                     continue  # blank line
                 where = f"row {first + len(rows)} (line {reader.line_num})"
                 if len(record) != len(header):
-                    message = f"{where}: expected {len(header)} fields, got {len(record)}"
+                    message = f"{where}: expected {count(len(header), 'field')}, got {len(record)}"
                     if not skip:
                         raise BatchError(message)
                     record = (record + [""] * len(header))[: len(header)]

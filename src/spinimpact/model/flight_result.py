@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from .._words import count
 from .presets import Ball, Ground
 from .result import Array, Result
 from .sphere3d import State3, Vector
@@ -187,7 +188,7 @@ class Flight(Result):
         fp = self.final_position
         lines.append(
             f"apex {float(self.apex_height):.2f} m at {float(self.apex_time):.3f} s; "
-            f"{int(self.bounce_count)} bounces; stopped ({self.stop}) at "
+            f"{count(int(self.bounce_count), 'bounce')}; stopped ({self.stop}) at "
             f"{float(self.final_time):.2f} s, "
             f"x {float(fp.x):.2f} m, z {float(fp.z):.2f} m"
         )

@@ -7,6 +7,7 @@ terminal and the page show the same rows and numbers.
 
 from __future__ import annotations
 
+import os
 from typing import TYPE_CHECKING
 
 from rich.console import Console
@@ -28,7 +29,13 @@ __all__ = [
     "print_simulation",
     "planar_tables",
     "print_planar_report",
+    "console",
+    "PIPED_WIDTH",
 ]
+
+#: Columns of a report printed where no terminal tells its width (a pipe, a file) and
+#: ``COLUMNS`` is not set: Rich would assume 80 and squeeze wider tables, wrapping rows.
+PIPED_WIDTH = 160
 
 _STYLES = {"creates energy": "bold red"}
 
@@ -45,8 +52,17 @@ def _rich(table: Table) -> RichTable:
     return out
 
 
-def _console(console: Console | None) -> Console:
-    return console or Console(highlight=False, soft_wrap=True)
+def console(*, stderr: bool = False) -> Console:
+    """The console reports print to: no highlighting, long lines kept whole, and
+    :data:`PIPED_WIDTH` columns when it is not a terminal (unless ``COLUMNS`` says)."""
+    out = Console(highlight=False, soft_wrap=True, stderr=stderr)
+    if not out.is_terminal and "COLUMNS" not in os.environ:
+        out.width = PIPED_WIDTH
+    return out
+
+
+def _console(given: Console | None) -> Console:
+    return given or console()
 
 
 def print_tables(tables: tuple[Table, ...], console: Console | None = None) -> None:
@@ -124,7 +140,7 @@ def print_simulation(sim: Simulation, console: Console | None = None) -> None:
 
     Notes
     -----
-    Times are printed in us, ms or s (:func:`~spinimpact.viz.tables.duration`) and the
+    Times are printed in µs, ms or s (:func:`~spinimpact.viz.tables.duration`) and the
     largest compression in µm;
     the table is :func:`~spinimpact.viz.tables.simulation_table`.
     """

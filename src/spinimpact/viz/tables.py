@@ -101,16 +101,17 @@ def number(x: Any, unit: str = "") -> str:
 
 
 def duration(seconds: Any) -> str:
-    """Format a time for a report in a unit that suits it: us below 1 ms, ms below 1 s,
-    else s (six significant digits, as :func:`number`).
+    """Format a time for a report in a unit that suits it: µs below 1 ms, ms below 1 s,
+    else s (six significant digits, as :func:`number`). Micro is the micro sign ``µ``
+    everywhere (µs, µm), never ``u``.
 
     Examples
     --------
     >>> duration(6.18087e-6), duration(0.0031416), duration(2.5)
-    ('6.18087 us', '3.1416 ms', '2.5 s')
+    ('6.18087 µs', '3.1416 ms', '2.5 s')
     """
     t = float(seconds)
-    for unit, scale in (("us", 1e-6), ("ms", 1e-3)):
+    for unit, scale in (("µs", 1e-6), ("ms", 1e-3)):
         if abs(t) < 1e3 * scale:
             return number(t / scale, unit)
     return number(t, "s")
