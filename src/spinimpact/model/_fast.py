@@ -37,8 +37,8 @@ _NUMPY_REALS = frozenset(
      np.uint8, np.uint16, np.uint32, np.uint64}
 )  # fmt: skip
 _EXACT_INT = 2**53  # Python ints beyond it may not convert as NumPy does: array path
-REGIMES = tuple(np.str_(x) for x in _REGIME_NAMES)  #: as the array path names them
-_CASES = tuple(np.str_(x) for x in MIN_ENERGY_CASES)
+REGIMES = tuple(_REGIME_NAMES)  #: plain str, as the array path names them (``freeze``)
+_CASES = tuple(MIN_ENERGY_CASES)
 _RULES = {name: tuple(ok for ok, _ in rules) for name, rules in RULES.items()}
 _NAMES: dict[type, frozenset[str]] = {}
 
@@ -103,8 +103,8 @@ def spread(one: Any, shape: tuple[int, ...]) -> Any:
     for name, v in one.__dict__.items():
         if hasattr(v, "_items"):  # a nested result
             values[name] = spread(v, shape)
-        elif isinstance(v, np.generic):
-            a = np.array(v, dtype=_TEXT.get(name, v.dtype), ndmin=len(shape))  # all 1s
+        elif isinstance(v, np.generic) or name in _TEXT:  # text of one impact: a str
+            a = np.array(v, dtype=_TEXT[name] if name in _TEXT else v.dtype, ndmin=len(shape))
             a.setflags(write=False)
             values[name] = a
         else:

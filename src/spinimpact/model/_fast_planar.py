@@ -23,7 +23,7 @@ from ._fast import build, number
 __all__ = ["planar_impact"]
 
 _FLOAT = np.float64
-_REGIMES = tuple(np.str_(x) for x in PLANAR_REGIMES)
+_REGIMES = tuple(PLANAR_REGIMES)  #: plain str, as the array path's ``freeze`` gives
 _ENERGY_RTOL = 1e-12  # as model.planar: a rise of the energy beyond rounding
 
 

@@ -29,7 +29,8 @@ Array = Any  # float or ndarray: scalar inputs give NumPy scalars, arrays give a
 
 
 def freeze(x: Any) -> Array:
-    """Freeze a value for a result field: read-only, and a NumPy scalar when 0-d.
+    """Freeze a value for a result field: read-only, and a NumPy scalar when 0-d (text:
+    a plain Python ``str``, which the REPL shows as ``'slip'``, not ``np.str_('slip')``).
 
     Parameters
     ----------
@@ -38,8 +39,8 @@ def freeze(x: Any) -> Array:
 
     Returns
     -------
-    numpy.generic or numpy.ndarray
-        A NumPy scalar for 0-d input, otherwise a read-only copy of ``x``.
+    numpy.generic, str or numpy.ndarray
+        A NumPy scalar (``str`` for text) for 0-d input, otherwise a read-only copy of ``x``.
 
     Examples
     --------
@@ -48,10 +49,13 @@ def freeze(x: Any) -> Array:
     >>> a = freeze([1.0, 2.0])
     >>> a, a.flags.writeable
     (array([1., 2.]), False)
+    >>> freeze(np.asarray(["slip", "stick"])[0])
+    'slip'
     """
     arr = np.array(x)
     arr.setflags(write=False)
-    return arr[()]
+    out = arr[()]
+    return str(out) if type(out) is np.str_ else out
 
 
 def regime_counts(regime: Any) -> str:
@@ -201,7 +205,7 @@ class Result:
                 prefix = f"{name}_" if v._column_prefix else ""
                 nested = v.columns().items()
                 out.update({prefix + k: np.broadcast_to(c, shape) for k, c in nested})
-            elif _is_array(v):
+            elif _is_array(v) or (isinstance(v, str) and name in self._text_fields()):
                 out[name] = np.broadcast_to(np.asarray(v), shape)
             elif hasattr(v, "columns"):
                 prefix = f"{name}_" if self._body_prefix else ""
@@ -241,8 +245,23 @@ class Result:
                 names.append(f.name)
         return tuple(names)
 
+    @classmethod
+    def _text_fields(cls) -> frozenset[str]:
+        """The fields declared ``Array`` (columns), which hold a ``str`` for one impact."""
+        known = _ARRAY_FIELDS.get(cls)
+        if known is None:
+            hints = typing.get_type_hints(cls)
+            known = frozenset(
+                f.name for f in fields(cls) if hints[f.name] is Array or hints[f.name] is np.ndarray
+            )
+            _ARRAY_FIELDS[cls] = known
+        return known
+
     def _items(self):  # type: ignore[no-untyped-def]
         return ((f.name, getattr(self, f.name)) for f in fields(self))  # type: ignore[arg-type]
+
+
+_ARRAY_FIELDS: dict[type, frozenset[str]] = {}
 
 
 def _is_array(v: Any) -> bool:
