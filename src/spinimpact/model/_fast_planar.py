@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from .._validation import SMALLEST
 from ..core import scalar_planar as law
 from ..core.planar import LAWS, PLANAR_REGIMES
 from ._fast import build, number
@@ -48,8 +49,8 @@ def planar_impact(kind: type, state: type, body: Any, vx: Any, vy: Any, omega: A
     if vx_ is None or vy_ is None or om_ is None or mu_ is None or k is None:
         return None
     u0, v0 = body.contact_velocity(vx_, vy_, om_)
-    if not v0 < 0.0:
-        return None  # the array path says why
+    if not v0 <= -SMALLEST:
+        return None  # the array path says why (as solve refuses |vy| < SMALLEST)
     w = body.collision_matrix
     a, b, d = w.tt, w.tn, w.nn
     code, tau_s, tau_c, tau_f, _, _, f1, u1, vn1 = law.planar_process(

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from .. import core
-from .._validation import as_real_array, broadcast, check, validated, whole
+from .._validation import approach, as_real_array, broadcast, validated, whole
 from ..core import planar as kernels
 from . import _fast_planar
 from .impact import State, _restitution
@@ -288,8 +288,8 @@ def _solve(kind, body, vx, vy, omega, mu, kappa, law):  # type: ignore[no-untype
     parts = {n: np.asarray(getattr(body, n)) for n in body.COLUMNS}
     broadcast(vx=vx_, vy=vy_, omega=om_, mu=mu_, **parts)  # names the shapes if they clash
     u0, v0 = body.contact_velocity(vx_, vy_, om_)
-    check("the contact point's normal velocity", np.asarray(v0), lambda v: v < 0,
-          "< 0 (the contact point must approach the surface)")  # fmt: skip
+    approach("the contact point's normal velocity", np.asarray(v0),
+             "the contact point must approach the surface")  # fmt: skip
     kappa_ = _restitution(kappa, v0)
     w = body.collision_matrix
     u0, v0, mu_, kappa_, vx_, vy_, om_, a, b, d = np.broadcast_arrays(
