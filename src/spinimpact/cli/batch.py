@@ -21,9 +21,10 @@ from .._words import count
 from ..model.planar import LAWS
 from ..model.registry import problem as get_problem
 from ..model.registry import problems
-from ._common import DEFAULTS, body_options, progress, surface_options
+from ._common import DEFAULTS, announce, body_options, long_run, progress, surface_options
 from ._compliance import tangential_law, tangential_options
 from ._problem_options import problem_name, problem_options, settings
+from ._vocabulary import help as _help
 from .sweep import _dask_client
 
 __all__ = ["batch_command"]
@@ -86,6 +87,7 @@ def _given(ctx: click.Context, name: str) -> bool:
 @click.option("--dask", "dask_address", default=None, metavar="ADDRESS",
               help="Solve the chunks on the Dask scheduler at ADDRESS ([dask] extra); the "
               "output is the same as without it.")  # fmt: skip
+@click.option("--force", is_flag=True, help=_help("force"))
 @click.pass_context
 def batch_command(
     ctx: click.Context,
@@ -96,6 +98,7 @@ def batch_command(
     chunk_size: int,
     problem: str | None,
     set_items: tuple[str, ...],
+    force: bool,
     dask_address: str | None,
     **options: Any,
 ) -> None:
@@ -165,7 +168,7 @@ def batch_command(
             )
 
     client = _dask_client(dask_address)
-    with progress() as bar, contextlib.ExitStack() as stack:
+    with long_run(), progress() as bar, contextlib.ExitStack() as stack:
         if client is not None:
             stack.callback(client.close)
         task = bar.add_task(f"solving {Path(source).name}", total=None)
@@ -181,6 +184,8 @@ def batch_command(
                 check_kind=check_kind,
                 problem=chosen_problem,
                 client=client,
+                force=force,
+                announce=announce,
             )
         except FieldError as exc:
             raise click.UsageError(f"--fields: {exc}") from None

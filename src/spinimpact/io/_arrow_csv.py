@@ -34,7 +34,7 @@ from .._validation import available
 from . import _tables
 from ._tables import Chunk
 
-__all__ = ["csv_chunks"]
+__all__ = ["chunk_head", "csv_chunks"]
 
 #: Bytes Arrow reads per block: large enough to parse in parallel, small next to a chunk.
 BLOCK_SIZE = 1 << 22
@@ -261,3 +261,24 @@ class _Lines:
 
     def __len__(self) -> int:
         return self.n
+
+
+def chunk_head(chunk: Chunk, m: int) -> Chunk:
+    """The first ``m`` rows of ``chunk`` (read by Arrow or by Python's csv module, or from
+    Parquet), as a chunk of their own: the trials of a batch's estimate
+    (:mod:`spinimpact._long`). Row ``i`` of the head is row ``i`` of the chunk."""
+    m = min(m, chunk.messages.size)
+    if chunk.text is not None:  # read by Arrow: its lazy cells and numbers, sliced
+        text = {k: t.slice(0, m) for k, t in chunk.text.items()}
+        empty = {k: e[:m] for k, e in chunk.empty.items()}
+        return Chunk(chunk.first, _Cells(text), empty, chunk.lines, chunk.messages[:m].copy(),
+                     text=text, numbers=_Numbers(text, empty))  # fmt: skip
+    arrow = None if chunk.arrow is None else {k: a.slice(0, m) for k, a in chunk.arrow.items()}
+    return Chunk(
+        chunk.first,
+        {k: v[:m] for k, v in chunk.columns.items()},
+        {k: e[:m] for k, e in chunk.empty.items()},
+        None if chunk.lines is None else chunk.lines[:m],
+        chunk.messages[:m].copy(),
+        arrow,
+    )

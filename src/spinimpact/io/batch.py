@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import itertools
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -29,12 +30,14 @@ from typing import Any
 
 import numpy as np
 
+from .._long import Estimate
 from .._validation import available, require
 from ..model.body import PRESETS, Body
 from ..model.impact import solve
 from ..model.registry import Problem
 from ._arrow_csv import csv_chunks as arrow_csv_chunks
 from ._background import BackgroundRows
+from ._batch_cost import estimate_batch, rows_in
 from ._rows import STDIO, ArrowRows, CsvRows, FieldError, chosen_fields, output_target
 from ._runner import map_in_order
 from ._stop import check as stop_check
@@ -227,6 +230,8 @@ def run_batch(
     check_kind: Callable[[str], None] | None = None,
     problem: str | Problem | None = None,
     client: Any = None,
+    force: bool = False,
+    announce: Callable[[Estimate], None] | None = None,
 ) -> BatchSummary:
     """Solve every row of ``source`` and write ``output`` (CSV, or Parquet by suffix).
 
@@ -352,6 +357,14 @@ def run_batch(
         kinds, numeric, solve_chunk = plan.kinds, plan.numeric, plan.solve
     if fields is not None:
         kinds = chosen_fields(kinds, fields, kind)
+    first = next(chunks, None)
+    if first is not None and str(source) != STDIO:
+        rows_total = rows_in(source, fmt_in)
+        estimate = estimate_batch(first, solve_chunk, rows_total, int(chunk_size), kind)
+        estimate.check(force)
+        if announce is not None and estimate.announced:
+            announce(estimate)
+    chunks = itertools.chain([] if first is None else [first], chunks)
     rows = skipped = 0
     side = units_file(output) if fmt_out == "csv" and not to_stdout else None
     with output_target(output) as target, contextlib.ExitStack() as stack:
