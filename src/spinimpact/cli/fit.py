@@ -3,11 +3,9 @@
 
 from __future__ import annotations
 
-import csv
 import json
-import math
-import re
 import warnings
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -16,7 +14,9 @@ import numpy as np
 
 from ..model.body import PRESETS, Body
 from ..model.fit_models import TANGENTIAL
+from ..model.presets import BALLS
 from ._common import image_format, jsonable
+from ._measured import read_columns, read_table, row_error
 from ._vocabulary import deprecated
 from ._vocabulary import help as _help
 
@@ -27,83 +27,6 @@ DROP_COLUMNS = {
     "heights": ("drop_height", "rebound_height"),
     "speeds": ("impact_speed", "rebound_speed"),
 }
-
-
-def read_columns(path: str) -> dict[str, np.ndarray]:
-    """A CSV file as named float columns; an empty cell is NaN (not measured), lines
-    starting with ``#`` are comments.
-
-    Raises
-    ------
-    ValueError
-        Naming the file, line and column of a cell that is not a number, or a file
-        with no header or no rows.
-    """
-    return read_table(path)[0]
-
-
-def read_table(path: str) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """:func:`read_columns` and the file's line number (from 1) of each data row, so that
-    an error about a row names the line it is on, comments and blank lines counted."""
-    numbers: list[int] = []
-
-    def content(fh: Any) -> Any:  # the lines csv reads, with their line numbers kept
-        for number, line in enumerate(fh, start=1):
-            if not line.lstrip().startswith("#"):
-                numbers.append(number)
-                yield line
-
-    with open(path, newline="", encoding="utf-8") as fh:
-        reader = csv.reader(content(fh))
-        header = next(reader, None)
-        if not header:
-            raise ValueError(f"{path}: empty file (no header line)")
-        names = [h.strip() for h in header]
-        if len(set(names)) != len(names):
-            raise ValueError(f"{path}: repeated column names in the header: {names}")
-        rows, lines = [], []
-        for row in reader:
-            line = numbers[-1]  # a quoted cell may span lines: the row's last line
-            if not any(cell.strip() for cell in row):
-                continue
-            if len(row) != len(names):
-                raise ValueError(
-                    f"{path}: row {line} has {len(row)} cells, the header {len(names)}"
-                )
-            values = []
-            for name, cell in zip(names, row, strict=True):
-                text = cell.strip()
-                try:
-                    values.append(float(text) if text else math.nan)
-                except ValueError:
-                    raise ValueError(
-                        f"{path}: row {line}, column {name}: {text!r} is not a number"
-                    ) from None
-                if text.lower() in ("nan", "inf", "-inf", "+inf", "infinity", "-infinity"):
-                    raise ValueError(f"{path}: row {line}, column {name}: {text!r}; leave a "
-                                     f"value that was not measured empty")  # fmt: skip
-            rows.append(values)
-            lines.append(line)
-    if not rows:
-        raise ValueError(f"{path}: no rows after the header")
-    table = np.array(rows, dtype=float)
-    return {name: table[:, i] for i, name in enumerate(names)}, np.array(lines)
-
-
-#: How the library names the first bad element of an array (``_validation.check``,
-#: ``fit_drops``): turned into the file's row by :func:`_rows`.
-_INDEX = re.compile(r" \(first offending index (\d+)\)| at index (\d+)")
-
-
-def _rows(path: str, lines: np.ndarray, exc: ValueError) -> ValueError:
-    """The library's error about the i-th data row, naming the row by its line in the file
-    (as the errors about a cell do) instead of by its index among the data rows."""
-    text = str(exc)
-    found = _INDEX.search(text)
-    if found is None:
-        return exc
-    line = int(lines[int(found.group(1) or found.group(2))])
-    return ValueError(f"{path}: row {line}: {text[: found.start()]}{text[found.end() :]}")
 
 
 def _knots(text: str) -> str | list[float]:
@@ -171,6 +94,14 @@ def _print(res: Any) -> None:
     for name, value in res.fixed.items():
         table.add_row(Text(name), f"{value:.5g}", "fixed", "")
     console.print(table)
+    if res.body is not None:  # drop tests have none: there the body plays no part
+        b = res.body
+        about = f"body: {b['name']}, "
+        if b["radius"] is None:
+            about += f"zeta = {b['zeta']:.4g} (its radius plays no part without spin)"
+        else:
+            about += f"R = {b['radius']:.4g} m, rho = {b['gyration']:.4g} m, zeta = {b['zeta']:.4g}"
+        console.print(Text(about))
     sig = "sigmas given" if res.sigma_given else f"one sigma estimated: {res.scale:.3g} m/s"
     from ..model.fit_drops import DropFit
 
@@ -213,6 +144,8 @@ def _print(res: Any) -> None:
 @click.option("--fix", multiple=True, metavar="NAME=VALUE",
               help=_help("fix", "E.g. --fix kappa=0.98 (repeatable)."))  # fmt: skip
 @click.option("--free-gyration", is_flag=True, help=_help("free-gyration"))
+@click.option("--ball", type=click.Choice(list(BALLS)), default=None,
+              help=_help("ball", "Gives the radius and gyration: no --radius."))  # fmt: skip
 @click.option("--body", type=click.Choice(list(PRESETS)), default=None,
               help=_help("body", "With --radius, which may be left out when no spin "
                                "is given or measured."))  # fmt: skip
@@ -243,7 +176,9 @@ def fit_command(bounces: str, **o: Any) -> None:
       after_vx, after_vy, after_omega   measured rebound, at least one
       sigma_after_vx, sigma_after_vy, sigma_after_omega   standard deviations
                                     (all three or none; none: one sigma estimated)
-    Estimates by weighted least squares; intervals from the profile likelihood.
+    The body is required (no shape is assumed: it decides how a bounce changes the
+    spin): --ball, --body with --radius, or --radius with --gyration. Estimates by
+    weighted least squares; intervals from the profile likelihood.
     """
     for option in ("plot", "corner"):
         if o[option] is not None:
@@ -252,6 +187,8 @@ def fit_command(bounces: str, **o: Any) -> None:
         raise click.BadParameter(f"{bounces!r} is not a file", param_hint="BOUNCES")
     if o["problem"] is not None:
         return _fit_problem_file(bounces, o)
+    if not o["drops"]:  # drops without spin need no body
+        _one_body(o)
     restitution = _knots(o["restitution"])
     o["restitution"] = restitution
     fixed = _fixed(o["fix"])
@@ -265,7 +202,7 @@ def fit_command(bounces: str, **o: Any) -> None:
         except FitWarning as exc:
             raise RuntimeError(str(exc)) from None
         except ValueError as exc:  # name a bad row by its line in the file
-            raise _rows(bounces, lines, exc) from None
+            raise row_error(bounces, lines, exc) from None
     if o["corner"] is not None and len(res.names) < 2:
         raise ValueError(f"--corner needs at least two fitted parameters, got {len(res.names)}")
     _print(res)
@@ -278,18 +215,39 @@ def _bounces(columns: dict[str, np.ndarray], o: dict[str, Any], fixed: dict[str,
 
     data = MeasuredBounces.from_columns(columns)
     spin = np.any(data.omega != 0) or np.any(data.measured[:, 2])
-    if o["radius"] is None:
-        if spin:
-            raise click.UsageError("--radius is needed: the file gives or measures spin")
-        o["radius"] = 1.0  # without spin the radius plays no part
-    if o["gyration"] is not None:
-        if o["body"] is not None:
-            raise click.UsageError("give either --body or --gyration, not both")
+    sized = o["ball"] is not None or o["radius"] is not None
+    if not sized and spin:
+        raise click.UsageError("--radius is needed: the file gives or measures spin")
+    if o["ball"] is not None:
+        body = BALLS[o["ball"]].body
+    elif o["gyration"] is not None:
         body = Body(mass=1.0, radius=o["radius"], gyration=o["gyration"])
-    else:
-        body = Body.preset(o["body"] or "solid-sphere", mass=1.0, radius=o["radius"])
-    return fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
-               free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
+    else:  # the mass plays no part, nor the radius without spin
+        body = Body.preset(o["body"], mass=1.0, radius=o["radius"] if sized else 1.0)
+    res = fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
+              free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
+    if not sized:  # say so, rather than record a radius nobody gave
+        res = replace(res, body={**res.body, "radius": None, "gyration": None})
+    return res
+
+
+def _one_body(o: dict[str, Any]) -> None:
+    """Exactly one of ``--ball``, ``--body``, ``--gyration``, with ``--radius`` where it
+    needs one: no body is assumed."""
+    given = [f"--{k}" for k in ("ball", "body", "gyration") if o[k] is not None]
+    if not given:
+        raise click.UsageError(
+            "a body is needed (its shape decides how a bounce changes the spin): give --ball "
+            f"({', '.join(BALLS)}), --body ({', '.join(PRESETS)}) with --radius, or "
+            "--radius with --gyration for another body"
+        )
+    if len(given) > 1:
+        raise click.UsageError(f"give one of --ball, --body, --gyration, not {' and '.join(given)}")
+    if o["ball"] is not None and o["radius"] is not None:
+        raise click.UsageError("--ball gives the radius: leave out --radius, or give --body or "
+                               "--gyration with it")  # fmt: skip
+    if o["gyration"] is not None and o["radius"] is None:
+        raise click.UsageError("--gyration needs --radius: zeta = 1 + R^2/rho^2 depends on both")
 
 
 def _write(res: Any, o: dict[str, Any]) -> None:
@@ -361,7 +319,7 @@ def _fit_problem_file(path: str, o: dict[str, Any]) -> None:
                               confidence=o["confidence"])  # fmt: skip
         except (FitWarning, ValueError) as exc:  # name a bad row by its line in the file
             bad = isinstance(exc, FitWarning)
-            raise RuntimeError(str(exc)) if bad else _rows(path, lines, exc) from None
+            raise RuntimeError(str(exc)) if bad else row_error(path, lines, exc) from None
     if o["corner"] is not None and len(res.names) < 2:
         raise click.UsageError(f"--corner needs at least two fitted parameters, got "
                                f"{len(res.names)}")  # fmt: skip
