@@ -304,9 +304,11 @@ def renamed(self):
         os.kill(os.getpid(), signum)
 
 atomic._Temporary.commit = renamed
-main()
-if when == "shutdown":
-    atexit.register(os.kill, os.getpid(), signum)
+try:
+    main()
+finally:
+    if when == "shutdown":
+        atexit.register(os.kill, os.getpid(), signum)
 """
 
 
@@ -329,3 +331,20 @@ def test_a_signal_after_the_outputs_are_renamed_exits_128_plus_it(tmp_path, sign
     assert all(path.read_bytes()[:4] == b"\x89PNG" for path in outputs)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bounces.csv", "corner.png",
                                                           "fit.png"]  # fmt: skip
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+def test_a_signal_while_a_failed_run_exits_says_nothing_changed(tmp_path, signum):
+    """A run that failed (no body: exit 2) and gets a signal during its shutdown exits
+    128 + the signal, saying no output was changed; it used to be killed by the signal."""
+    src = bounce_file(tmp_path)
+    (tmp_path / "fit.png").write_bytes(b"old")
+    args = ["fit", str(src), "--radius", "0.033", "--plot", str(tmp_path / "fit.png")]
+    out = subprocess.run([sys.executable, "-c", SIGNAL_SCRIPT, "shutdown", str(int(signum)),
+                          *args], capture_output=True, text=True, timeout=120)  # fmt: skip
+    name = signal.Signals(signum).name
+    assert out.returncode == 128 + signum, out.stderr
+    first, second = out.stderr.splitlines()
+    assert first.startswith("spinimpact: error: a body is needed")
+    assert second == f"spinimpact: {name} came while it was exiting; no output was changed"
+    assert (tmp_path / "fit.png").read_bytes() == b"old"

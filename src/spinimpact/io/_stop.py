@@ -56,6 +56,7 @@ class _State:
     raised = False  # whether a Stopped was raised already (at most one from the handler)
     depth = 0  # critical sections open (temporary outputs alive)
     finished = False  # every output is in place: a signal now exits at once (finished())
+    exiting = False  # the block of stop_on_signals(keep=True) has ended: the process ends next
     installed = False  # stop_on_signals' handlers are in place
 
 
@@ -102,7 +103,10 @@ def finished() -> None:
 
 def _exit(signum: int) -> None:
     name = signal.Signals(signum).name
-    line = f"spinimpact: {name} came after the command had finished; its output is complete\n"
+    if _state.finished:
+        line = f"spinimpact: {name} came after the command had finished; its output is complete\n"
+    else:  # it failed or was stopped, and is exiting: every old output is as it was
+        line = f"spinimpact: {name} came while it was exiting; no output was changed\n"
     os.write(2, line.encode())
     os._exit(128 + signum)  # nothing is left to clean up; skip the interpreter's shutdown
 
@@ -119,7 +123,7 @@ def _skip_teardown() -> None:
 
 
 def _handler(signum: int, _frame: Any) -> None:
-    if _state.finished:
+    if _state.finished or _state.exiting:
         _exit(signum)
     second = bool(_state.signum)
     if not second:
@@ -134,16 +138,19 @@ def stop_on_signals(*, keep: bool = False) -> Iterator[None]:
     """Handle SIGINT and SIGTERM as the module's notes describe, then restore the handlers.
 
     With ``keep=True`` (the command line's own process, which ends next) the handlers stay
-    when the block ends, and after a :func:`finished` run the process ends once the exit
-    handlers have run, without the module teardown: a signal until then exits with 128 +
-    its number instead of killing the process. Outside the main thread (where handlers
-    cannot be installed) it does nothing.
+    when the block ends: a signal from then on exits at once with 128 + its number, saying
+    whether the run had finished (its output complete) or not (no output changed), instead
+    of killing the process or being lost in a shutdown that hangs; and after a
+    :func:`finished` run the process ends once the exit handlers have run, without the
+    module teardown. Outside the main thread (where handlers cannot be installed) it does
+    nothing.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
     previous = {s: signal.getsignal(s) for s in _SIGNALS}
     _state.signum, _state.raised, _state.depth, _state.finished = 0, False, 0, False
+    _state.exiting = False
     for s in _SIGNALS:
         signal.signal(s, _handler)
     _state.installed = True
@@ -152,6 +159,7 @@ def stop_on_signals(*, keep: bool = False) -> Iterator[None]:
     try:
         yield
     finally:
+        _state.exiting = keep
         if not keep:
             _state.installed = False
             for s, handler in previous.items():
