@@ -1,7 +1,8 @@
 """What a batch will cost, measured before it runs: the rule of every long run
 (:mod:`spinimpact._long`) applied to :func:`~spinimpact.io.batch.run_batch`.
 
-The first rows of the file's first chunk are solved as the run will solve them, in trials
+The first rows of the file's first chunk are solved as the run will solve them (two rows
+first, untimed, so that compiling a kernel is not counted as the rows' time), in trials
 grown while they are cheap (at most a tenth of the run's predicted time, 2 s at most; a
 law that steps each impact in time is measured on its first 64 rows); their time per row
 and per chunk, scaled to the file's rows (:func:`rows_in`), is the estimate. A batch over a
@@ -44,6 +45,7 @@ def estimate_batch(
     """How long a batch of ``rows`` rows of problem ``kind`` will take here, measured on the
     first rows of its ``first`` chunk, solved by ``solve_chunk``."""
     sizes = ladder(first.messages.size, first.messages.size)
+    solve_chunk(chunk_head(first, 2))  # untimed: compiled kernels and imports warm up first
     trials = grow(lambda m: lambda: solve_chunk(chunk_head(first, m)), sizes, 1, 0, max(rows, 1))
     per_chunk, per_row = fit_line(trials.points, trials.seconds)
     seconds = per_chunk * math.ceil(rows / chunk_size) + per_row * rows
