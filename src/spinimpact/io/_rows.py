@@ -66,7 +66,8 @@ def chosen_fields(kinds: dict[str, str], fields: Sequence[str], kind: str) -> di
     if isinstance(fields, str):
         fields = [f for f in fields.split(",") if f.strip()]
     names = list(dict.fromkeys(str(f).strip() for f in fields))
-    what = {"paper": "the paper's bodies", "planar": "free planar bodies"}.get(kind, "pendulums")
+    what = {"paper": "the paper's bodies", "planar": "free planar bodies",
+            "pendulum": "pendulums"}.get(kind, f"problem {kind!r}")  # fmt: skip
     for name in names or [""]:
         if name not in kinds:
             got = f"unknown output field {name!r}" if name else "no output field given"
