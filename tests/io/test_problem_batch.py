@@ -140,3 +140,20 @@ def test_stdin_to_stdout_for_a_sphere_file(tmp_path):
         Body.solid_sphere(mass=1.0, radius=0.1), [2, -3, 0], [0, 0, 30], mu=0.2, kappa=0.8
     )  # the declared defaults
     assert rows[0]["regime"] == want.regime and float(rows[0]["after_vy"]) == want.after.vy
+
+
+def test_a_sphere_file_under_a_tangential_law_equals_solve_sphere(tmp_path):
+    from spinimpact import Walton
+
+    v, w = sphere_rows(20, seed=5)
+    source = write(tmp_path / "in.csv", SPHERE, [[*a, *b] for a, b in zip(v.tolist(), w.tolist(),
+                                                                          strict=True)])  # fmt: skip
+    law = Walton(beta0=0.3)
+    out = tmp_path / "out.csv"
+    run_batch(source, out, defaults={"tangential": law, "mu": 0.3})
+    rows = read(out)
+    want = solve_sphere(Body.solid_sphere(mass=1.0, radius=0.1), v, w, mu=0.3, kappa=0.8,
+                        tangential=law)  # fmt: skip
+    for name in ("after_vx", "after_wz", "tangential_restitution"):
+        got = np.array([float(r[name]) for r in rows])
+        assert np.array_equal(got, want.columns()[name]), name

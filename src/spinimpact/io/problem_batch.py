@@ -155,7 +155,7 @@ class ProblemBatch:
         self.numeric = tuple(i.name for i in problem.inputs if not i.text and i.name in header)
         kinds = result_kinds(problem, self.law)
         given = [c for c in header if c in problem.names]
-        self.kinds = {n: kinds[n] for n in problem.outputs(given)}
+        self.kinds = {n: kinds[n] for n in problem.outputs(given, kinds)}
         check_header(header, skip, self.kinds, required)
 
     def _defaults(self, given: dict[str, Any]) -> dict[str, Any]:

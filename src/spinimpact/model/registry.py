@@ -230,7 +230,9 @@ class Problem:
         """The result's columns (:meth:`Result.column_names`)."""
         return tuple(self.result.column_names())
 
-    def outputs(self, given: Iterable[str] = ()) -> tuple[str, ...]:
+    def outputs(
+        self, given: Iterable[str] = (), columns: Iterable[str] | None = None
+    ) -> tuple[str, ...]:
         """The columns a batch writes after a file's own: the result's columns that are not
         inputs the file gives (nor their ``before_`` copies), ``regime`` first.
 
@@ -238,11 +240,15 @@ class Problem:
         ----------
         given : iterable of str
             The input columns the file holds.
+        columns : iterable of str, optional
+            The result's columns, if not :meth:`result_columns` (a result under a tangential
+            law has columns of its own).
         """
         given = set(given)
         skip = given | {f"before_{n}" for n in given}
         skip |= {column for column, name in self.echoes.items() if name in given}
-        names = [n for n in self.result_columns() if n not in skip]
+        every = self.result_columns() if columns is None else tuple(columns)
+        names = [n for n in every if n not in skip]
         return tuple(["regime"] * ("regime" in names) + [n for n in names if n != "regime"])
 
     def defaults(self, **overrides: Any) -> dict[str, Any]:
