@@ -146,8 +146,8 @@ def test_a_sphere_file_under_a_tangential_law_equals_solve_sphere(tmp_path):
     from spinimpact import Walton
 
     v, w = sphere_rows(20, seed=5)
-    source = write(tmp_path / "in.csv", SPHERE, [[*a, *b] for a, b in zip(v.tolist(), w.tolist(),
-                                                                          strict=True)])  # fmt: skip
+    rows = [[*a, *b] for a, b in zip(v.tolist(), w.tolist(), strict=True)]
+    source = write(tmp_path / "in.csv", SPHERE, rows)
     law = Walton(beta0=0.3)
     out = tmp_path / "out.csv"
     run_batch(source, out, defaults={"tangential": law, "mu": 0.3})
