@@ -179,6 +179,7 @@ def test_no_module_over_600_lines(name):
     assert lines <= 600, f"{name} has {lines} lines"
 
 
+@pytest.mark.slow
 def test_importing_the_package_stays_light():
     code = (
         "import sys, spinimpact\n"

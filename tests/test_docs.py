@@ -28,6 +28,7 @@ MODULES = sorted(
 
 
 @pytest.mark.parametrize("name", ["spinimpact", *MODULES])
+@pytest.mark.slow
 def test_docstring_examples(name):
     module = importlib.import_module(name)
     for needed in getattr(module, "__doctest_requires__", ()):  # optional extras

@@ -63,6 +63,7 @@ def _limit_file_size():
     resource.setrlimit(resource.RLIMIT_FSIZE, (20_000, 20_000))
 
 
+@pytest.mark.slow
 def test_a_write_that_fails_part_way_leaves_the_old_output(tmp_path):
     keep = tmp_path / "keep.csv"
     keep.write_text("old")
@@ -75,6 +76,7 @@ def test_a_write_that_fails_part_way_leaves_the_old_output(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "keep.csv"]
 
 
+@pytest.mark.slow
 def test_a_linked_output_is_written_through_the_link(tmp_path):
     (tmp_path / "results").mkdir()
     target = tmp_path / "results" / "out.csv"
@@ -89,6 +91,7 @@ def test_a_linked_output_is_written_through_the_link(tmp_path):
 
 @pytest.mark.skipif(not HAS_FULL, reason="needs /dev/full")
 @pytest.mark.parametrize("command", ["batch", "sweep"])
+@pytest.mark.slow
 def test_a_link_to_a_full_device_fails_and_stays(tmp_path, command):
     pytest.importorskip("pyarrow")
     link = tmp_path / "out.parquet"
@@ -118,6 +121,7 @@ DROP_AND_RUN = """
 
 
 @pytest.mark.skipif(not hasattr(os, "geteuid") or os.geteuid() != 0, reason="needs root")
+@pytest.mark.slow
 def test_a_read_only_output_of_root_is_not_replaced_by_an_unprivileged_run(tmp_path):
     # Every command writes through atomic_path (tests/io/test_atomic.py checks it as
     # nobody too); batch is the quick one to run.
@@ -145,6 +149,7 @@ def test_a_read_only_output_of_root_is_not_replaced_by_an_unprivileged_run(tmp_p
         shutil.rmtree(shared, ignore_errors=True)
 
 
+@pytest.mark.slow
 def test_a_killed_runs_temporary_is_removed_by_the_next_run(tmp_path):
     source = incidences(tmp_path / "in.csv", 200_000)
     output = tmp_path / "out.csv"
@@ -226,6 +231,7 @@ def test_a_bad_row_on_standard_input_is_one_line(capsys, monkeypatch):
     assert run.stdout == ""
 
 
+@pytest.mark.slow
 def test_dash_reads_standard_input_and_writes_standard_output(tmp_path):
     source = incidences(tmp_path / "in.csv", 50)
     by_file = tmp_path / "out.csv"

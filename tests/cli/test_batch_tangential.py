@@ -64,6 +64,7 @@ LAWS = [
 
 
 @pytest.mark.parametrize("args, law", LAWS)
+@pytest.mark.slow
 def test_every_row_is_the_library_result(cli, tmp_path, args, law):
     rows = _rows()
     _write(tmp_path / "in.csv", rows)

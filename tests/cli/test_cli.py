@@ -100,6 +100,7 @@ def test_custom_body_with_gyration_spool():
         (["--no-such-option"], "no-such-option"),
     ],
 )
+@pytest.mark.slow
 def test_bad_input_is_one_line_exit_2(args, needle):
     out = run("solve", *args)
     assert out.returncode == 2
@@ -111,6 +112,7 @@ def test_bad_input_is_one_line_exit_2(args, needle):
     assert "Traceback" not in out.stderr
 
 
+@pytest.mark.slow
 def test_help_and_version():
     out = run("solve", "--help")
     assert out.returncode == 0 and "--kappa" in out.stdout and "counter-clockwise" in out.stdout

@@ -48,6 +48,7 @@ def test_solve_json_is_the_library_result(capsys, args, law):
     assert data["tangential_restitution"] == pytest.approx(float(imp.tangential_restitution))
 
 
+@pytest.mark.slow
 def test_solve_prints_a_report_in_a_subprocess():
     proc = subprocess.run(
         [sys.executable, "-m", "spinimpact", "solve", "--vx", "1", "--omega", "0",
@@ -97,6 +98,7 @@ def test_bad_options_are_one_line_and_exit_2(capsys, args, needle):
     assert needle in lines[0]
 
 
+@pytest.mark.slow
 def test_sweep_with_a_law_writes_the_library_numbers(tmp_path):
     out = tmp_path / "sweep.csv"
     proc = subprocess.run(

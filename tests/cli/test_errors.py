@@ -105,6 +105,7 @@ def test_bugs_keep_their_traceback(capsys, monkeypatch):
         main(["solve", "--json"])
 
 
+@pytest.mark.slow
 def test_missing_package_in_a_fresh_process():
     """The installed command, end to end: dask hidden from a fresh interpreter."""
     code = (
@@ -116,6 +117,7 @@ def test_missing_package_in_a_fresh_process():
 
 
 @pytest.mark.parametrize("args", [["--help"], ["solve", "--json"], ["solve", "--help"]])
+@pytest.mark.slow
 def test_light_commands_import_neither_matplotlib_nor_rich(args):
     code = (
         "import sys; from spinimpact.cli import main; main(sys.argv[1:]); "

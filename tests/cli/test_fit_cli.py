@@ -334,6 +334,7 @@ def test_a_signal_after_the_outputs_are_renamed_exits_128_plus_it(tmp_path, sign
 
 
 @pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM])
+@pytest.mark.slow
 def test_a_signal_while_a_failed_run_exits_says_nothing_changed(tmp_path, signum):
     """A run that failed (no body: exit 2) and gets a signal during its shutdown exits
     128 + the signal, saying no output was changed; it used to be killed by the signal."""

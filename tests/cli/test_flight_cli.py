@@ -39,6 +39,7 @@ def test_the_bounce_table_and_the_summary_are_printed(cli):
     assert max(len(line) for line in out.splitlines()) <= 80
 
 
+@pytest.mark.slow
 def test_plot_and_animation_are_written_and_nothing_else(cli, tmp_path):
     png, gif = tmp_path / "serve.png", tmp_path / "serve.gif"
     status, out, _ = cli("flight", "--speed", "8", "--elevation-deg", "30", "--max-bounces", "1",
@@ -56,6 +57,7 @@ def test_a_failed_run_keeps_the_old_file(cli, tmp_path):
     assert png.read_bytes() == b"old" and [p.name for p in tmp_path.iterdir()] == ["old.png"]
 
 
+@pytest.mark.slow
 def test_many_balls_print_the_spread(cli):
     status, out, _ = cli("flight", "--samples", "50", "--speed", "50", "--speed-sd", "2",
                          "--elevation-deg", "-6", "--launch-height", "2.8", "--spin-rpm", "2000",
@@ -100,12 +102,14 @@ def test_bad_input_is_one_line_and_exit_2(cli, args, message):
     assert len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_the_command_runs_as_a_program():
     cmd = [sys.executable, "-m", "spinimpact", "flight", "--speed", "-1"]
     run = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
     assert run.returncode == 2 and "Traceback" not in run.stderr
 
 
+@pytest.mark.slow
 def test_a_compliance_law_from_the_command_line(cli):
     from spinimpact.model.compliance import Walton
 
@@ -124,6 +128,7 @@ def test_a_compliance_law_from_the_command_line(cli):
     assert status == 2 and "needs --beta0" in err
 
 
+@pytest.mark.slow
 def test_a_wall_from_the_command_line(cli, tmp_path):
     from spinimpact.model.presets import Wall
 

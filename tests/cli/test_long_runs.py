@@ -17,6 +17,7 @@ def run(*args, timeout=120):
                           capture_output=True, text=True, timeout=timeout)  # fmt: skip
 
 
+@pytest.mark.slow
 def test_a_flight_with_a_step_of_a_tenth_of_a_microsecond_is_refused_in_one_line():
     out = run("flight", "--dt", "1e-7")
     assert out.returncode == 2, out.stderr
@@ -27,6 +28,7 @@ def test_a_flight_with_a_step_of_a_tenth_of_a_microsecond_is_refused_in_one_line
     assert out.stdout == ""
 
 
+@pytest.mark.slow
 def test_a_long_flight_says_its_estimate_first_and_force_runs_it(cli, monkeypatch):
     monkeypatch.setattr(_long, "ANNOUNCE_SECONDS", 0.0)
     monkeypatch.setattr(_long, "REFUSE_SECONDS", 0.01)

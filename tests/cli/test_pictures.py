@@ -118,6 +118,7 @@ def test_map_help_says_what_the_options_do():
         assert needle in text, needle
 
 
+@pytest.mark.slow
 def test_mass_and_size_change_no_map():
     def images(body):
         fig = maps.plot_map(body, mu=0.3, kappa=0.6, n=30)
@@ -129,6 +130,7 @@ def test_mass_and_size_change_no_map():
         np.testing.assert_allclose(x, y, rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_map_legends_offer_only_what_can_happen():
     body = Body.solid_sphere(mass=1.0, radius=0.1)
 

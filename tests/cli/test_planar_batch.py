@@ -172,6 +172,7 @@ def test_sweep_errors_are_one_line_exit_2(run_main, args, needle):
     assert err.startswith("spinimpact: error: ") and needle in err
 
 
+@pytest.mark.slow
 def test_sweep_error_from_the_shell():
     result = shell("sweep", "--planar", "pendulum", "--omega", "-1:1:3")
     assert result.returncode == 2 and result.stdout == ""

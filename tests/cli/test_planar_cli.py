@@ -75,6 +75,7 @@ CASES = {
 
 
 @pytest.mark.parametrize("body", list(CASES))
+@pytest.mark.slow
 def test_json_equals_the_python_api(body):
     options, make, (vx, vy, omega) = CASES[body]
     law = {"rod": "newton", "block": "energetic"}.get(body, "poisson")
@@ -120,6 +121,7 @@ def test_report_and_both_figures(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["laws.svg", "routh.png"]  # no temps
 
 
+@pytest.mark.slow
 def test_map_plot_spans_the_angles_of_the_body(run_main, tmp_path):
     target = tmp_path / "map.png"
     status, out, err = run_main(
@@ -174,6 +176,7 @@ def test_bad_input_is_one_line_exit_2(run_main, args, needle):
     assert needle in lines[0]
 
 
+@pytest.mark.slow
 def test_bad_input_from_the_shell():
     out = run("--body", "eccentric-disk", "--offset", 0.2)
     assert out.returncode == 2 and out.stdout == ""
@@ -223,6 +226,7 @@ def test_html_page_is_written_atomically(tmp_path):
 
 
 @pytest.mark.parametrize("body", list(CASES))
+@pytest.mark.slow
 def test_html_page_for_every_body(run_main, tmp_path, body):
     options, make, _ = CASES[body]
     target = tmp_path / f"{body}.htm"

@@ -63,6 +63,7 @@ def test_calibrated_hertz_stays_hertz_and_says_so():
         (["--plot", "sim.txt"], "--plot must end in .png, .svg or .pdf, got 'sim.txt'"),
     ],
 )
+@pytest.mark.slow
 def test_bad_options_are_named_as_typed_before_any_output(args, message, tmp_path):
     out = subprocess.run(
         [sys.executable, "-m", "spinimpact", "simulate", *args],
@@ -84,6 +85,7 @@ def test_help_gives_the_law_defaults():
     assert "Here in (0, 1]" in text and "Default 0.8, as solve" in text
 
 
+@pytest.mark.slow
 def test_damping_given_means_no_calibration():
     out = _run("--contact", "hunt-crossley", "--alpha", "0.1")
     assert out.returncode == 0, out.stderr

@@ -31,6 +31,7 @@ KHARAZ = (
 )
 
 
+@pytest.mark.slow
 def test_mindlin_rows_and_plot(capsys, tmp_path):
     png = tmp_path / "t.png"
     main([*KHARAZ, "--tangential", "mindlin", "--plot", str(png)])

@@ -189,6 +189,7 @@ def test_pair_report_names_the_angle_between_paths(cli):
     assert "ball 2 after" in out and "Contact, ball 1 relative to ball 2" in out
 
 
+@pytest.mark.slow
 def test_plot_and_html_are_written(cli, tmp_path):
     plot, page = tmp_path / "views.png", tmp_path / "report.html"
     plot.write_bytes(b"previous")
@@ -254,6 +255,7 @@ def test_bad_input_is_one_line_and_exit_status_2(cli, args, needle):
     assert needle in err
 
 
+@pytest.mark.slow
 def test_bad_input_as_a_subprocess():
     out = run("pair", "--velocity1", "1,2,3,4")
     assert out.returncode == 2

@@ -143,6 +143,7 @@ def test_memory_is_checked_against_the_address_space_limit_and_never_a_traceback
     assert_one_line_error(out, "out of memory")
 
 
+@pytest.mark.slow
 def test_dry_run_estimates_the_output_and_writes_nothing(tmp_path):
     out = sweep("--vx", "-5:5:1001", "--omega", "-50:50:101", "--output", tmp_path / "d",
                 "--dry-run")  # fmt: skip

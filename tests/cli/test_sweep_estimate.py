@@ -5,9 +5,12 @@ chunk (it used to run 130,000 points for a grid of 40,401)."""
 
 import re
 
+import pytest
+
 from tests.cli.test_errors import _keep_sigterm  # noqa: F401 (an autouse fixture)
 
 
+@pytest.mark.slow
 def test_a_dry_run_of_slow_points_is_measured_on_fewer_than_a_chunk(cli, tmp_path):
     status, out, err = cli("sweep", "--tangential", "mindlin-deresiewicz", "--poisson-ratio",
                            "0.23", "--output", tmp_path / "d", "--dry-run")  # fmt: skip

@@ -31,6 +31,7 @@ def test_a_sweep_of_one_point_says_point(cli):
     assert re.search(r"^1 point\b", out, re.M), out
 
 
+@pytest.mark.slow
 def test_report_says_what_it_wrote(cli, tmp_path):
     page = tmp_path / "impact.html"
     status, out, err = cli("report", "--output", page)
@@ -38,6 +39,7 @@ def test_report_says_what_it_wrote(cli, tmp_path):
     assert out.strip() == f"wrote {page}"
 
 
+@pytest.mark.slow
 def test_map_and_figures_say_what_they_wrote(cli, tmp_path):
     image = tmp_path / "map.png"
     status, out, err = cli("map", "--output", image, "--resolution", 10, "--dpi", 50)

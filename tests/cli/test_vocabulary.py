@@ -134,6 +134,7 @@ def _run(capsys, line: str) -> tuple[str, str]:
 
 
 @pytest.mark.parametrize(("command", "old", "new", "rest"), ALIASES)
+@pytest.mark.slow
 def test_an_old_name_still_works_and_warns_once(capsys, command, old, new, rest):
     as_json = "" if command == "simulate" else "--json"  # simulate prints a report
     old_out, old_err = _run(capsys, f"{command} {old} {rest} {as_json}")

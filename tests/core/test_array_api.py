@@ -125,6 +125,7 @@ def test_jax_arrays_eager(case_arrays, jax):
     )
 
 
+@pytest.mark.slow
 def test_jax_jit(case_arrays, jax):
     """Compiled by XLA, which may fuse and reorder operations: equal to rounding."""
     vx, vy, omega, mass, radius, zeta, mu, kappa = case_arrays

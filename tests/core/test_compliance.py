@@ -240,6 +240,7 @@ finite = dict(allow_nan=False, allow_infinity=False)
     st.floats(-1, 1, **finite),
 )
 @settings(max_examples=300, deadline=None)
+@pytest.mark.slow
 def test_energy_never_increases_and_the_laws_stay_in_their_bounds(
     slip, speed, zeta, mu, kappa, ratio, beta0
 ):

@@ -90,6 +90,7 @@ def test_the_integrator_meets_the_parabola_to_rounding_without_air():
     np.testing.assert_allclose(seg.apex_height, exact.apex_height, rtol=1e-12)
 
 
+@pytest.mark.slow
 def test_a_vertical_fall_approaches_the_terminal_speed_as_tanh():
     # dv/dt = g - k v^2 from rest: v = v_t tanh(g t / v_t), fallen v_t^2/g ln cosh(g t / v_t)
     m, r = 0.0027, 0.02
@@ -113,6 +114,7 @@ def test_a_vertical_fall_approaches_the_terminal_speed_as_tanh():
     assert speed[-1] == pytest.approx(vt, rel=1e-3)  # 4 s: within 0.1 % of terminal
 
 
+@pytest.mark.slow
 def test_spin_about_the_path_decays_with_the_distance_travelled():
     # spin along the vertical velocity: no lift; d omega / ds = -k_s omega => exp(-k_s s)
     c = _aero(decay=0.05)
@@ -156,6 +158,7 @@ def test_energy_lost_in_flight_is_the_work_of_the_drag():
     assert lost < 0 and lost == pytest.approx(ref[9], rel=1e-8)
 
 
+@pytest.mark.slow
 def test_impacts_are_located_to_the_integrators_precision():
     c = _aero()
     args = _rows(0.0, [0, 1.0, 0], [30.0, 8.0, 2.0], [30.0, 50.0, -250])
@@ -202,6 +205,7 @@ def test_roll_slides_then_rolls_to_rest_in_closed_form():
     np.testing.assert_array_equal(roll.velocity[0], 0.0)
 
 
+@pytest.mark.slow
 def test_fly_stops_at_max_bounces_and_settles_to_rest():
     c = _aero()
     args = _rows([0, 1.0, 0], [10.0, 3.0, 0.0], [0, 0, 0])

@@ -92,6 +92,7 @@ def _integrate_contact(ct, cn, w_tt, w_nn, mu, kappa, steps=20_000):
     return f, tau1, work_t
 
 
+@pytest.mark.slow
 def test_seam_against_direct_integration_for_general_contacts():
     """Contacts with arbitrary 1/W_nn and W_tt/W_nn (two balls, a 3D sphere...)."""
     rng = np.random.default_rng(23)

@@ -252,6 +252,7 @@ def _docs_example():
     return next(b for b in blocks if "numba.njit" in b)
 
 
+@pytest.mark.slow
 def test_the_docs_example_runs():
     _numba()
     code = _docs_example().replace("n = 1_000_000", "n = 2_000")
@@ -284,6 +285,7 @@ def test_the_docs_example_runs():
 
 
 @pytest.mark.parametrize("name", ["newton", "poisson", "energetic"])
+@pytest.mark.slow
 def test_planar_bit_for_bit_from_python_and_compiled_code(name):
     from spinimpact import PlanarBody, solve_planar
 

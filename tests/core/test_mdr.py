@@ -40,6 +40,7 @@ def test_the_default_resolution_is_converged():
 
 @pytest.mark.parametrize("kappa", [1.0, 0.8])
 @pytest.mark.parametrize("u0", [0.3, -1.0])
+@pytest.mark.slow
 def test_no_slip_limit_is_the_history_rule(u0, kappa):
     """mu -> infinity: the springs never slip but at the receding edge; the event-driven
     rule F = F_load(delta) + k_t (xi - xi_load(delta)) (integrate_tangential,
@@ -61,6 +62,7 @@ def test_sliding_throughout_is_coulomb_over_the_whole_impulse():
     assert float(out) == pytest.approx(slip - (1 + kappa) * zeta * mu, abs=2e-5)
 
 
+@pytest.mark.slow
 def test_rigid_limit():
     """A stiff tangential contact sticks as the rigid law does (slip after 0) with an error
     that falls with the stiffness ratio."""

@@ -257,6 +257,7 @@ def _quadrature_excess(kappa, springs):
 
 
 @pytest.mark.parametrize("kappa", [1.0, 0.7])
+@pytest.mark.slow
 def test_sliding_impact_is_coulombs(kappa):
     """A contact that slides throughout transmits mu times the row's normal force at every
     instant: the rigid Coulomb result slip - sign(slip) (1 + kappa) zeta mu |vy|, up to the
@@ -433,6 +434,7 @@ def _energy_errors(slip, mu, kappa, steps, springs=32):
 @pytest.mark.parametrize(
     "slip, mu, kappa", [(0.1, 0.3, 1.0), (0.5, 0.3, 1.0), (1.0, 0.3, 0.8), (3.0, 0.3, 1.0)]
 )
+@pytest.mark.slow
 def test_trace_energy_never_increases_and_balances(slip, mu, kappa):
     """The tangential energy ``u^2/(2 zeta) + spring_energy`` of the continuous model never
     increases (friction only dissipates; the springs leave the contact unloaded). The
@@ -518,6 +520,7 @@ def _own_leapfrog(slip, zeta, mu, kappa, r, springs, steps):
 
 
 @pytest.mark.parametrize("kappa", [1.0, 0.8])
+@pytest.mark.slow
 def test_partial_slip_matches_an_independent_leapfrog(kappa):
     """Between the limits (stick, reversal, micro-slip) no closed form exists: mdr_slip (32
     springs, 8192 steps) against this file's own first-order stepping of the same 32-spring

@@ -101,6 +101,7 @@ def test_regime_names_are_the_documented_ones():
     assert LAWS == ("newton", "poisson", "energetic")
 
 
+@pytest.mark.slow
 def test_every_regime_under_every_law_and_the_regimes_agree(s):
     """Each of the 8 x 3 (regime, law) pairs occurs at least 500 times, and the regime the
     closed form reports is the one the reference's sequence of events gives, everywhere."""

@@ -176,6 +176,7 @@ def test_newton_creates_energy_only_where_the_slip_stops_or_reverses(cases):
 
 @pytest.mark.parametrize("law", [POISSON, STRONGE], ids=["poisson", "stronge"])
 @pytest.mark.parametrize("kappa", ["random", 1.0])
+@pytest.mark.slow
 def test_poisson_and_stronge_never_create_energy(cases, law, kappa):
     """dT <= 0 on 12,000 random bodies, by the closed form and by the reference (derivation
     in the module docstring). With kappa = 1 the bound is tightest."""

@@ -126,6 +126,7 @@ def pr():
 # --- the samples -----------------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_the_sphere_sample_covers_every_regime_on_every_kind_of_plane(sp):
     """The reference's own events classify the sample: every regime at least 2,000 times;
     every regime but no-slip (built exactly on the default plane) at least 500 times on

@@ -14,10 +14,14 @@ friction impulse outside the cone by a relative 1e-12 fails.
 """
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from spinimpact import Body, Surface, solve_pair, solve_sphere
+
+#: Hypothesis solves a few hundred impacts a test: `make test` runs them.
+pytestmark = pytest.mark.slow
 
 EPS = np.finfo(float).eps
 TOL = 64 * EPS

@@ -51,6 +51,7 @@ def _cases(n=24, seed=7):
         )
 
 
+@pytest.mark.slow
 def test_energy_never_increases():
     """E = T + U_n + F^2/(2 k_t) is non-increasing (module docstring); sampled on the
     dense output, so a rise of the order of the tolerance times E0 would be noise: the
@@ -247,6 +248,7 @@ def test_spring_rules_coincide_for_a_linear_normal_spring():
     st.floats(0.05, 5.0),
     st.sampled_from([0.0, 0.05, 0.3]),
 )
+@pytest.mark.slow
 def test_energy_never_increases_property(speed, vx, omega, mu, ratio, alpha):
     """Hypothesis: any incidence, friction, stiffness ratio and Hunt-Crossley damping;
     E never rises above 1e-8 E0 on the samples and the rebound keeps the cap."""
@@ -263,6 +265,7 @@ def _history(vx, vy, omega, mu, ratio, alpha=0.0, spring="history"):
                                 spring=spring)  # fmt: skip
 
 
+@pytest.mark.slow
 def test_the_history_rule_keeps_its_field_energy_from_rising():
     """spring="history": E = T + U_n + the traction field's energy (loading history plus
     the punch beyond it; a sliding field's n F^2/((n + 1) k_t)) never rises, on the same

@@ -27,6 +27,7 @@ def test_pybullet_sticking_impacts_leave_rolling_as_exact(body):
     np.testing.assert_allclose(run.omega, run.exact.after.omega, rtol=1e-9)
 
 
+@pytest.mark.slow
 def test_pybullet_exact_contact_settings_give_the_exact_answer():
     """For a sphere (normal through the centre) Bullet's one-step impulse solve,
     Newton restitution and Coulomb friction with sticking, is the rigid-body answer,

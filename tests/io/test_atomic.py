@@ -79,6 +79,7 @@ KILL_INSIDE = """
 
 
 @pytest.mark.parametrize("kind", ["file", "dir"])
+@pytest.mark.slow
 def test_a_killed_runs_temporary_is_named_and_removed_by_the_next_run(tmp_path, kind):
     target = tmp_path / ("out.csv" if kind == "file" else "grid")
     run = child(KILL_INSIDE, target, kind, check=False)
@@ -103,6 +104,7 @@ LIVE = """
 """
 
 
+@pytest.mark.slow
 def test_a_running_processs_temporary_is_left_alone(tmp_path):
     target = tmp_path / "out.csv"
     with subprocess.Popen(
@@ -240,6 +242,7 @@ WRITE = """
 
 
 @as_root
+@pytest.mark.slow
 def test_a_read_only_file_of_another_user_is_not_replaced(shared):
     target = shared / "report.html"
     target.write_text("root's")
@@ -251,6 +254,7 @@ def test_a_read_only_file_of_another_user_is_not_replaced(shared):
     assert sorted(p.name for p in shared.iterdir()) == ["report.html"]
 
 
+@pytest.mark.slow
 def test_a_file_the_process_may_not_write_is_refused(shared):
     # Whoever runs the tests: a 0444 file of another user (root runs the writer as nobody),
     # or the user's own 0444 file (as cp, which opens the file for writing, refuses it).
@@ -294,6 +298,7 @@ NPY_FULL = """
 # 50,000 values fail as they are written; 500 (4 kB) wait in the file's buffer and fail
 # when it is flushed at close, which used to raise before the folder was removed.
 @pytest.mark.parametrize("values", [50_000, 500])
+@pytest.mark.slow
 def test_a_npy_sweep_that_fills_the_disk_leaves_no_folder(tmp_path, values):
     run = child(NPY_FULL, tmp_path / "grid", values)
     assert run.stdout.strip() == str(errno.EFBIG)

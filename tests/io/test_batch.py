@@ -146,6 +146,7 @@ def test_malformed_rows_name_row_and_column(tmp_path, header, row, message):
     assert not (tmp_path / "out.csv").exists()
 
 
+@pytest.mark.slow
 def test_skip_writes_error_rows_and_counts_them(tmp_path):
     src, out = tmp_path / "in.csv", tmp_path / "out.csv"
     write_csv(src, ["vx", "vy", "omega"], [[1, -1, 0], [2, "x", 0], [3, 1, 0], [4, -2, 0]])
@@ -161,6 +162,7 @@ def test_skip_writes_error_rows_and_counts_them(tmp_path):
     )
 
 
+@pytest.mark.slow
 def test_empty_and_missing_input(tmp_path):
     (tmp_path / "empty.csv").write_text("")
     result = cli("batch", tmp_path / "empty.csv", "--output", tmp_path / "o.csv")
@@ -226,17 +228,20 @@ def test_common_csv_layouts(tmp_path):
         ("vx;vy;omega", "missing column 'vx'"),
     ],
 )
+@pytest.mark.slow
 def test_header_problems(tmp_path, header, message):
     result = _run(tmp_path, header + "\n1,-1,0,0\n")
     assert result.returncode == 2 and message in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
 
 
+@pytest.mark.slow
 def test_error_column_name_is_reserved_in_skip_mode(tmp_path):
     result = _run(tmp_path, "vx,vy,omega,error\n1,-1,0,x\n", "--on-error", "skip")
     assert result.returncode == 2 and "'error'" in result.stderr
 
 
+@pytest.mark.slow
 def test_body_and_gyration_per_row(tmp_path):
     text = "vx,vy,omega,body,gyration\n1,-1,0,ring,\n1,-1,0,,0.2\n1,-1,0,ring,0.05\n1,-1,0,Ring,\n"
     result = _run(tmp_path, text, "--gyration", "0.3", "--on-error", "skip")
@@ -248,6 +253,7 @@ def test_body_and_gyration_per_row(tmp_path):
     assert "got 'Ring'" in got[3]["error"]
 
 
+@pytest.mark.slow
 def test_first_bad_row_is_reported_whatever_the_column(tmp_path):
     result = _run(tmp_path, "vx,vy,omega\n1,-2,x\ny,-2,3\n")
     assert result.returncode == 2 and "row 1 (line 2), column omega" in result.stderr

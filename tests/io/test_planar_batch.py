@@ -215,6 +215,7 @@ def test_the_header_decides_the_solver(tmp_path):
         input_kind(tmp_path / "missing.csv")
 
 
+@pytest.mark.slow
 def test_chunks_and_writers_do_not_change_the_file(tmp_path, monkeypatch):
     header, rows = planar_rows(50, seed=11)
     src = write_csv(tmp_path / "in.csv", header, rows)

@@ -129,6 +129,7 @@ def test_the_toy_problem_through_the_command_line(tmp_path, toy):
     assert caught.value.code == 2
 
 
+@pytest.mark.slow
 def test_stdin_to_stdout_for_a_sphere_file(tmp_path):
     text = "vx,vy,vz,wx,wy,wz\n2,-3,0,0,0,30\n"
     run = subprocess.run([sys.executable, "-m", "spinimpact", "batch", "-", "--output", "-",

@@ -155,6 +155,7 @@ BALL = ["vx", "vy", "vz", "wx", "wy", "wz"]
          "row 2 (line 3): radius/gyration is too large"),
     ],
 )  # fmt: skip
+@pytest.mark.slow
 def test_bad_rows_are_named(tmp_path, header, row, message):
     good = ["2", "-3", "0", "0", "0", "0"] + [""] * (len(header) - 6)
     source = write(tmp_path / "in.csv", header, [good, row])

@@ -107,6 +107,7 @@ def _cli(*args):
     )  # fmt: skip
 
 
+@pytest.mark.slow
 def test_cli_sweeps_a_sphere_and_writes_its_fields(tmp_path):
     pa = pytest.importorskip("pyarrow.parquet")
     out = tmp_path / "shell.parquet"
@@ -139,6 +140,7 @@ def test_cli_sweeps_a_sphere_and_writes_its_fields(tmp_path):
         (["--sphere", "solid-sphere", "--fields", "after_omega"], "got 'after_omega'"),
     ],
 )
+@pytest.mark.slow
 def test_cli_refuses_bad_input_in_one_line_with_exit_2(args, message):
     done = _cli(*args)
     assert done.returncode == 2

@@ -42,6 +42,7 @@ def test_grid_sweep_equals_solve_on_the_whole_grid():
     np.testing.assert_array_equal(result.histogram, hist)
 
 
+@pytest.mark.slow
 def test_chunk_size_does_not_change_a_grid():
     a = run_sweep(make(chunk_size=1), histogram=("energy_loss", 0, 1, 7))
     b = run_sweep(make(chunk_size=100_000), histogram=("energy_loss", 0, 1, 7))
@@ -173,6 +174,7 @@ def test_random_points_do_not_depend_on_the_order_of_the_axes():
     )
 
 
+@pytest.mark.slow
 def test_histogram_spec_errors():
     with pytest.raises(ValueError, match="histogram's bins must be an integer <= 1000000"):
         run_sweep(make(), histogram=("after_vx", -1.0, 1.0, 10**9))
@@ -348,6 +350,7 @@ def test_a_grid_axis_is_never_built_whole():
     )
 
 
+@pytest.mark.slow
 def test_random_points_depend_on_the_seed_alone_not_on_the_chunks():
     spec = dict(RANDOM, mu="0.3")
     axes = {k: parse_axis(k, v) for k, v in spec.items()}

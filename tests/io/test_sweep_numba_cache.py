@@ -63,6 +63,7 @@ def _undo(root: Path) -> None:
     shutil.rmtree(root)
 
 
+@pytest.mark.slow
 def test_sweep_runs_without_a_writable_package_folder_or_home():
     root = Path(tempfile.mkdtemp(prefix="spinimpact-ro-"))  # not under pytest's 0700 tmp
     try:

@@ -19,6 +19,7 @@ from spinimpact.dynamics import (
 from spinimpact.model.result import Result
 
 
+@pytest.mark.slow
 def test_contact_laws_import_and_run_without_the_simulation():
     """model.contact used to call simulate() (an import cycle); now both use the core
     kernel, so a fresh interpreter that only uses the laws never imports dynamics."""

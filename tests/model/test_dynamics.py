@@ -55,6 +55,7 @@ def _errors(sim, kappa):
 
 @pytest.mark.parametrize("law", LAWS)
 @pytest.mark.parametrize("regime", CASES)
+@pytest.mark.slow
 def test_rebound_converges_to_rigid_closed_form(law, regime):
     vx, omega, mu = CASES[regime]
     # the law's restitution at this speed, to the integrator's best accuracy
@@ -144,6 +145,7 @@ def test_restitution_model_from_damped_law_in_solve():
         ),
     ],
 )
+@pytest.mark.slow
 def test_calibration_hits_the_target(make, target, speed):
     law = make(target)
     assert law.restitution(0.05, speed, rtol=1e-11) == pytest.approx(target, abs=1e-9)
@@ -279,6 +281,7 @@ def test_the_issue_case_elastic_restitution_is_one_and_solve_accepts_it():
 
 @pytest.mark.parametrize("rtol", [1e-10, 1e-5, 1e-3])
 @pytest.mark.parametrize("law", ELASTIC)
+@pytest.mark.slow
 def test_elastic_laws_give_restitution_one_at_any_tolerance(law, rtol):
     for mass in (0.05, 1.0):
         for speed in (0.1, 3.0, 30.0):
@@ -328,6 +331,7 @@ def test_nearly_elastic_damped_laws_never_exceed_one(law, rtol):
                sim.energetic_restitution) <= 1.0  # fmt: skip
 
 
+@pytest.mark.slow
 def test_the_state_at_separation_is_integrated_up_to_it():
     """An elastic linear spring, so the rebound is solve()'s at kappa = 1, at rtol 1e-12.
     The step that holds separation crosses the end of the force; its interpolant put the

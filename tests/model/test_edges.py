@@ -110,6 +110,7 @@ def test_len_and_iteration():
         len(imp[0])
 
 
+@pytest.mark.slow
 def test_cli_without_arguments_prints_help_and_succeeds():
     out = subprocess.run(
         [sys.executable, "-m", "spinimpact"], capture_output=True, text=True, timeout=60

@@ -32,6 +32,7 @@ def cases():
     return random_cases(400, seed=14)
 
 
+@pytest.mark.slow
 def test_every_regime_bit_for_bit(cases, monkeypatch):
     c = cases
     seen = set()
@@ -143,6 +144,7 @@ def test_no_warnings_on_scalar_calls():
         dict(vx=(1,), vy=(1,), omega=(1,), mu=(1,), kappa=(1,)),
     ],
 )
+@pytest.mark.slow
 def test_one_element_arrays_bit_for_bit(shapes, cases, monkeypatch):
     c = cases
     for i in range(0, 400, 7):

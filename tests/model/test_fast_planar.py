@@ -42,6 +42,7 @@ def test_every_regime_bit_for_bit(cases, law, monkeypatch):
 
 
 @pytest.mark.parametrize("law", LAWS)
+@pytest.mark.slow
 def test_pendulums_bit_for_bit(law, monkeypatch):
     rng = np.random.default_rng(5)
     seen = set()

@@ -22,6 +22,7 @@ KINDS = (SphereImpact, State3, Vector, Surface)
     "ball",
     [Body.spherical_shell(mass=0.057, radius=0.033), Body(mass=2.0, radius=0.1, gyration=0.05)],
 )
+@pytest.mark.slow
 def test_every_regime_bit_for_bit(ball, monkeypatch):
     n, vs, v, w, mu, kappa = random_sphere_cases(300, seed=21)
     regimes = set()
@@ -78,6 +79,7 @@ def _pair_array_path(monkeypatch, *args, **kwargs):
 
 
 @pytest.mark.parametrize("given", ["normal", "centres"])
+@pytest.mark.slow
 def test_pairs_bit_for_bit(given, monkeypatch):
     b1 = Body.solid_sphere(mass=0.17, radius=0.028575)
     b2 = Body(mass=0.3, radius=0.04, gyration=0.02)

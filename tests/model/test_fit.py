@@ -262,6 +262,7 @@ def test_a_model_that_gives_no_number_is_an_error_not_a_silent_fit(monkeypatch):
         fit(data, BALL, fixed={"kappa": 0.7}, start={"mu": 0.2})
 
 
+@pytest.mark.slow
 def test_random_truths_are_recovered_from_exact_data():
     """40 random (mu, kappa, body) truths over mixed sliding and sticking bounces: the
     start scan and the optimizer find the one minimum every time."""

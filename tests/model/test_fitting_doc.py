@@ -5,9 +5,12 @@ from __future__ import annotations
 import doctest
 from pathlib import Path
 
+import pytest
+
 DOC = Path(__file__).resolve().parents[2] / "docs" / "fitting.md"
 
 
+@pytest.mark.slow
 def test_the_examples_of_the_fitting_page_run():
     flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
     result = doctest.testfile(str(DOC), module_relative=False, optionflags=flags)

@@ -100,6 +100,7 @@ def test_many_balls_in_chunks_give_the_same_numbers_as_one_chunk():
     assert whole.path_position.shape[1] == 0 and one.path_position.shape[-1] == 3
 
 
+@pytest.mark.slow
 def test_the_result_has_columns_rows_and_a_table():
     f = flight("golf", "green", speed=60.0, angle=12.0, height=0.0214, spin_rpm=2800,
                spin_axis="backspin")  # fmt: skip
@@ -231,6 +232,7 @@ def test_a_ball_placed_on_the_ground_slides_and_rolls_without_bouncing():
     assert float(f.final_time) == pytest.approx(t1 + v1 / (ground.rolling * G), rel=1e-13)
 
 
+@pytest.mark.slow
 def test_bounces_in_air_match_an_independent_integration_with_events():
     # SciPy's DOP853 with event location and solve_sphere at each impact, against flight()
     from scipy.integrate import solve_ivp

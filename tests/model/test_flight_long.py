@@ -22,6 +22,7 @@ def test_a_step_of_a_tenth_of_a_microsecond_is_refused_with_its_estimate():
     assert "this flight (1 ball, dt = 1e-07 s)" in str(e.value)
 
 
+@pytest.mark.slow
 def test_a_run_over_the_limit_is_refused_and_forced_it_gives_the_same_numbers(monkeypatch):
     plain = flight("tennis", "hard", **SERVE, dt=1e-3)
     monkeypatch.setattr(_long, "ANNOUNCE_SECONDS", 0.0)
@@ -35,6 +36,7 @@ def test_a_run_over_the_limit_is_refused_and_forced_it_gives_the_same_numbers(mo
     np.testing.assert_array_equal(forced.final_position.array, plain.final_position.array)
 
 
+@pytest.mark.slow
 def test_a_short_run_is_not_announced_and_reports_progress_by_chunk():
     seen, calls = [], []
     flight("tennis", "hard", speed=[30.0, 31.0, 32.0], angle=0.0, chunk=2,

@@ -12,6 +12,7 @@ from spinimpact.model.presets import BALLS, GROUNDS, Ball, Ground, thick_shell_g
 ROOT = Path(__file__).resolve().parents[2]
 
 
+@pytest.mark.slow
 def test_the_examples_of_the_flight_page_run():
     flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
     result = doctest.testfile(str(ROOT / "docs" / "flight.md"), module_relative=False,

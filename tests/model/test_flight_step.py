@@ -65,6 +65,7 @@ def test_the_limit_is_the_boundary(name):
 
 
 @pytest.mark.parametrize("name", list(CASES))
+@pytest.mark.slow
 def test_at_the_limit_the_bounces_are_those_of_a_fine_step(name):
     ball, ground, kw = CASES[name]
     limit = _limit(ball, **kw)[0] * (1 - 1e-12)

@@ -37,6 +37,7 @@ def _switch_times(sim):
     return sim.t[1:][sim.stuck[1:] != sim.stuck[:-1]]
 
 
+@pytest.mark.slow
 def test_linear_elastic_time_domain_equals_stronge():
     ball = Body.solid_sphere(mass=0.01, radius=0.01)
     rng = np.random.default_rng(11)

@@ -35,6 +35,7 @@ def test_energy_never_increases(vx, w, omega, mu, kappa, zeta):
 
 
 @given(signed, speed, st.floats(-300, 300), mus, kappas, zetas)
+@pytest.mark.slow
 def test_impulse_ratio_bounded_by_mu(vx, w, omega, mu, kappa, zeta):
     imp = _solve(vx, w, omega, mu, kappa, zeta)
     assert abs(imp.impulse_ratio) <= mu * (1 + 1e-12)

@@ -167,6 +167,7 @@ def test_from_zeta_at_the_smallest_radius_and_largest_zeta():
         si.Body(mass=1.0, radius=1e-50, gyration=1e-61)
 
 
+@pytest.mark.slow
 def test_tiny_friction_is_accepted_by_the_command_line():
     """The issue: ``spinimpact solve --mu 1e-310`` failed with "overflow encountered in
     scalar divide" from the particle comparison's energy threshold."""

@@ -142,6 +142,7 @@ def test_impact_figures_have_no_text_on_a_line_or_a_text(name):
 
 
 @pytest.mark.parametrize("name", sorted(plots.PAPER_FIGURES))
+@pytest.mark.slow
 def test_paper_figures_are_typeset_and_clear(name):
     fig = plots.paper_figure(name)
     assert _problems(fig) == []
@@ -149,12 +150,14 @@ def test_paper_figures_are_typeset_and_clear(name):
 
 
 @pytest.mark.parametrize(("mu", "kappa"), [(0.2, 0.8), (0.0, 0.5), (0.6, 0.0)])
+@pytest.mark.slow
 def test_maps_are_typeset_and_clear(mu, kappa):
     fig = plots.plot_map(Body.solid_sphere(mass=1.0, radius=0.1), mu=mu, kappa=kappa, n=24)
     assert _untypeset(fig) == []
     assert _problems(fig) == []
 
 
+@pytest.mark.slow
 def test_simulation_figure_is_typeset_and_clear():
     from spinimpact.dynamics import LinearContact, simulate
 
@@ -164,6 +167,7 @@ def test_simulation_figure_is_typeset_and_clear():
     assert _problems(fig) == []
 
 
+@pytest.mark.slow
 def test_the_checks_find_what_they_look_for():
     """The geometry check sees a label put on a curve, and the typesetting check sees
     ASCII and Unicode math (so a passing figure means something)."""

@@ -15,6 +15,7 @@ SERVE = flight("tennis", "hard", speed=50.0, angle=-6.0, height=2.8, spin_rpm=20
                spin_axis=[0, 0.3, -1], max_bounces=3)  # fmt: skip
 
 
+@pytest.mark.slow
 def test_tables_show_the_results_numbers():
     bounces, summary = flight_tables(SERVE)
     assert len(bounces.rows) == 3
@@ -59,6 +60,7 @@ def test_many_balls_are_drawn_with_every_bounce():
     assert "40 table-tennis balls" in fig._suptitle.get_text()
 
 
+@pytest.mark.slow
 def test_animation_writes_a_gif_with_frames(tmp_path):
     from PIL import Image
 
@@ -91,6 +93,7 @@ def test_the_wall_is_drawn_where_it_stands():
     assert bounces.rows[0][0] == "1w" and bounces.rows[1][0] == "2"
 
 
+@pytest.mark.slow
 def test_the_view_frames_the_flight_and_bounces_not_the_roll_out():
     """A ball that bounces to a roll and rolls on (here about 36 m of bounces, then to
     rest 160 m away) once squashed the flight into the first fifth of the picture. The

@@ -34,6 +34,7 @@ def page(tmp_path_factory):
     return path, path.read_text(encoding="utf-8"), imp
 
 
+@pytest.mark.slow
 def test_report_holds_the_numbers_of_the_impact(page):
     _, text, imp = page
     assert f'id="regime">{imp.regime}<' in text
@@ -72,12 +73,14 @@ def test_report_api_rejects_arrays():
         impact_report_html(imp)
 
 
+@pytest.mark.slow
 def test_report_flags_energy_creating_particle():
     imp = solve(Body.solid_sphere(mass=1.0, radius=0.1), 0.1, -1.0, 0.0, mu=0.5, kappa=0.8)
     text = impact_report_html(imp, solve_particle(0.1, -1.0, mu=0.5, kappa=0.8))
     assert '<span class="warn">creates energy</span>' in text
 
 
+@pytest.mark.slow
 def test_report_bad_output_name(tmp_path):
     out = subprocess.run(
         [sys.executable, "-m", "spinimpact", "report", "--output", str(tmp_path / "r.txt")],

@@ -42,6 +42,7 @@ def legend_of(fig):
     return legend
 
 
+@pytest.mark.slow
 def test_the_legend_covers_no_curve_and_the_title_names_the_law_in_words():
     """The legend once sat on the stuck-core curves, and the title was the law's repr
     (``MindlinDeresiewicz(poisson_ratio=0.23)``) followed by untypeset symbols."""

@@ -102,6 +102,7 @@ def case(request):
     return imp, planar_report_html(imp)
 
 
+@pytest.mark.slow
 def test_tables_are_the_terminal_reports_rows(case):
     imp, text = case
     shown, printed = page_tables(text), terminal_rows(imp)
@@ -141,6 +142,7 @@ def test_energy_creation_is_explained_only_where_it_happens(case):
     assert ('<span class="warn">yes</span>' in text) == bool(imp.creates_energy)
 
 
+@pytest.mark.slow
 def test_geometry_in_numbers():
     imp = IMPACTS["rod, Poisson"]()
     text = planar_report_html(imp, geometry={"length L": "1 m", "angle to the surface": 0.785398})
@@ -156,6 +158,7 @@ def test_geometry_in_numbers():
     assert "= 1.5 &gt; μ W<sub>tt</sub> = 0.75 1/kg, so it cannot" in text
 
 
+@pytest.mark.slow
 def test_pendulum_geometry_and_locked_regime():
     text = planar_report_html(IMPACTS["pendulum, locked"]())
     assert "fixed, frictionless pivot O" in text and "has rank one" in text

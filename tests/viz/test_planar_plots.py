@@ -201,6 +201,7 @@ def test_planar_tables_hold_the_result(reverse):
     assert ("px", number(PENDULUM.px, "m")) in pend[0].rows
 
 
+@pytest.mark.slow
 def test_no_marker_hides_another():
     """Where tau_0, tau_* and tau_1 coincide (a pendulum's slip stops and reverses at the
     end of compression; kappa = 0 ends the impact there) one marker names them all; the
@@ -239,6 +240,7 @@ def test_no_marker_hides_another():
     [(ROD, (1.0, -1.0, 0.0)), (PENDULUM, (None, None, -2.0))],
     ids=["rod", "pendulum"],
 )
+@pytest.mark.slow
 def test_laws_figure_legend_sits_beside_its_panels(body, args):
     """The legend once floated in a column of its own, 0.7 inch right of the panels."""
     fig = viz.plot_laws(body, *args, 0.3, 0.8)

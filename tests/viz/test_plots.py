@@ -96,6 +96,7 @@ def test_paper_figures_are_in_their_regimes(name, regime):
 
 
 @pytest.mark.parametrize("name", sorted(PAPER_FIGURES))
+@pytest.mark.slow
 def test_paper_figures_legends_sit_at_their_panels(name):
     """Figs. 5a-c once put the works' legend in the figure's corner, a quarter inch below
     the panel it explains."""

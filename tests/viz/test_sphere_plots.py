@@ -50,6 +50,7 @@ def direction(a):
 
 
 @pytest.mark.parametrize("name", ["tennis", "racket"])
+@pytest.mark.slow
 def test_sphere_arrows_point_along_the_projected_vectors(figures, name):
     imp, fig = {"tennis": TENNIS, "racket": RACKET}[name], figures[name]
     found = arrows(fig)
@@ -99,6 +100,7 @@ def test_curved_arrow_turns_the_way_the_spin_does():
 
 
 @pytest.mark.parametrize("name", ["tennis", "racket", "pair"])
+@pytest.mark.slow
 def test_nothing_overlaps_and_labels_are_typeset(figures, name, tmp_path):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.image import imread
@@ -190,6 +192,7 @@ def pages():
     return {"sphere": sphere_report_html(TENNIS), "pair": sphere_report_html(CUT)}
 
 
+@pytest.mark.slow
 def test_page_holds_the_tables_and_the_figure(pages):
     page = pages["sphere"]
     assert page.startswith("<!DOCTYPE html>") and "http" not in page.split("<body>")[1]

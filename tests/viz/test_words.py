@@ -81,6 +81,7 @@ def _cli(*args):
     )
 
 
+@pytest.mark.slow
 def test_solve_help_cites_the_equations():
     from spinimpact import solve as api
 
@@ -92,6 +93,7 @@ def test_solve_help_cites_the_equations():
 
 
 @pytest.mark.parametrize("command", ["map", "figures"])
+@pytest.mark.slow
 def test_dpi_has_help_text(command):
     out = _cli(command, "--help")
     assert out.returncode == 0
