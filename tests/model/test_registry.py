@@ -85,3 +85,18 @@ def test_a_registered_problem_is_listed_detected_and_solved(toy):
         register(toy)
     with pytest.raises(ValueError, match="e must be in \\[0, 1\\], got 2.0"):
         toy.solve(speed=-1.0, e=2.0)
+
+
+def test_a_planar_problem_with_a_law_per_row_equals_solve_planar_law_by_law():
+    from spinimpact import PlanarBody, solve_planar
+
+    laws = np.array(["newton", "poisson", "energetic", "newton"], dtype=object)
+    vx = np.array([0.5, 1.0, -0.3, 2.0])
+    planar = problem("planar")
+    got = planar.solve(mass=1.0, inertia=1 / 12, rx=0.4, ry=-0.2, vx=vx, vy=-1.0, omega=0.0,
+                       mu=0.6, kappa=0.9, law=laws).columns()  # fmt: skip
+    for i, law in enumerate(laws):
+        one = solve_planar(PlanarBody(1.0, 1 / 12, 0.4, -0.2), vx[i], -1.0, 0.0, mu=0.6,
+                           kappa=0.9, law=law).columns()  # fmt: skip
+        for name in ("after_vx", "after_omega", "energetic_restitution", "regime"):
+            assert np.asarray(got[name])[i] == np.asarray(one[name]).reshape(-1)[0], (law, name)
