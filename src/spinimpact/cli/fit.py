@@ -12,10 +12,11 @@ from typing import Any
 import click
 import numpy as np
 
+from .._long import TooLong
 from ..model.body import PRESETS, Body
 from ..model.fit_models import TANGENTIAL
 from ..model.presets import BALLS
-from ._common import image_format, jsonable
+from ._common import announce, image_format, jsonable
 from ._measured import read_columns, read_table, row_error
 from ._vocabulary import deprecated
 from ._vocabulary import help as _help
@@ -167,6 +168,7 @@ def _print(res: Any) -> None:
               help="The problem. Fit any registered one (spinimpact problems lists them): "
                    "the file holds its inputs per bounce and measured result columns, "
                    "optional sigma_<column>.")  # fmt: skip
+@click.option("--force", is_flag=True, help=_help("force"))
 def fit_command(bounces: str, **o: Any) -> None:
     """Fit friction and restitution to measured bounces in a CSV file.
 
@@ -201,6 +203,8 @@ def fit_command(bounces: str, **o: Any) -> None:
             res = _drops(columns, o, bounces, lines) if o["drops"] else _bounces(columns, o, fixed)
         except FitWarning as exc:
             raise RuntimeError(str(exc)) from None
+        except TooLong as exc:  # the rule of every long run: one line naming --force
+            raise click.ClickException(exc.estimate.refusal("--force")) from None
         except ValueError as exc:  # name a bad row by its line in the file
             raise row_error(bounces, lines, exc) from None
     if o["corner"] is not None and len(res.names) < 2:
@@ -225,7 +229,8 @@ def _bounces(columns: dict[str, np.ndarray], o: dict[str, Any], fixed: dict[str,
     else:  # the mass plays no part, nor the radius without spin
         body = Body.preset(o["body"], mass=1.0, radius=o["radius"] if sized else 1.0)
     res = fit(data, body, model=o["model"], restitution=o["restitution"], fixed=fixed or None,
-              free_gyration=o["free_gyration"], confidence=o["confidence"])  # fmt: skip
+              free_gyration=o["free_gyration"], confidence=o["confidence"], force=o["force"],
+              announce=announce)  # fmt: skip
     if not sized:  # say so, rather than record a radius nobody gave
         res = replace(res, body={**res.body, "radius": None, "gyration": None})
     return res
@@ -316,7 +321,10 @@ def _fit_problem_file(path: str, o: dict[str, Any]) -> None:
         try:
             res = fit_problem(declared, columns, free=free, fixed=fixed, body=body,
                               tangential=None if o["model"] == "rigid" else o["model"],
-                              confidence=o["confidence"])  # fmt: skip
+                              confidence=o["confidence"], force=o["force"],
+                              announce=announce)  # fmt: skip
+        except TooLong as exc:  # the rule of every long run: one line naming --force
+            raise click.ClickException(exc.estimate.refusal("--force")) from None
         except (FitWarning, ValueError) as exc:  # name a bad row by its line in the file
             bad = isinstance(exc, FitWarning)
             raise RuntimeError(str(exc)) if bad else row_error(path, lines, exc) from None

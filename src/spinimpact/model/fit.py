@@ -10,13 +10,15 @@ profile and the intervals are in :mod:`spinimpact.model.fit_profile`.
 from __future__ import annotations
 
 import warnings
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from .. import _long as long
 from .._validation import setting
+from .._words import count
 from .body import Body
 from .fit_checks import NoScatterError, refuse_impossible, scatter
 from .fit_data import SIGMAS, MeasuredBounces
@@ -110,12 +112,39 @@ class Estimation:
     warning: str | None
 
 
-def estimate(prob: Problem, x0: np.ndarray, conf: float, scatter: Any) -> Estimation:
+#: Evaluations of the model a fit makes per free parameter, for its estimate of its own time:
+#: an upper figure (fits of 40 bounces measured 75 a parameter with the rigid law, 87 with
+#: Walton's, 183 with Stronge's: least squares, finite-difference curvature, profiles).
+EVALUATIONS_PER_PARAMETER = 200
+
+
+def fit_cost(prob: Problem, x0: np.ndarray, force: bool, announce: Any) -> None:
+    """The rule of every long run (:mod:`spinimpact._long`) for a fit: one evaluation of the
+    model over all bounces, timed, times :data:`EVALUATIONS_PER_PARAMETER` per free
+    parameter; said first over a minute (``announce``), refused over an hour unless
+    ``force``."""
+    start = long.clock()
+    prob.residual(x0)
+    took = long.clock() - start
+    k = int(np.sum(prob.free))
+    n = prob.mask.shape[0]
+    what = f"this fit ({count(n, 'bounce')}, {count(k, 'free parameter')})"
+    cost = long.Estimate(what, took * EVALUATIONS_PER_PARAMETER * k,
+                         "one evaluation of the model over all its bounces")  # fmt: skip
+    cost.check(force)
+    if announce is not None and cost.announced:
+        announce(cost)
+
+
+def estimate(prob: Problem, x0: np.ndarray, conf: float, scatter: Any, *, force: bool = False,
+             announce: Any = None) -> Estimation:  # fmt: skip
     """Least squares from ``x0``, then the curvature and the profile intervals; where a
     profile meets a lower ``chi2`` (several minima), start again from there (at most
     twice). ``scatter(prob, chi2)`` gives the variance scale ``s^2`` (1 with sigmas) or
     raises where it cannot be estimated. Shared by :func:`fit` and
-    :func:`spinimpact.fit_problem`, whatever model ``prob`` holds."""
+    :func:`spinimpact.fit_problem`, whatever model ``prob`` holds. First, its time is
+    estimated (:func:`fit_cost`)."""
+    fit_cost(prob, x0, force, announce)
     best = minimize(prob, x0)
     for attempt in range(3):
         x = best.x
@@ -145,6 +174,8 @@ def fit(
     start: Mapping[str, float] | None = None,
     confidence: float = 0.95,
     reference_speed: float | None = None,
+    force: bool = False,
+    announce: Callable[[Any], None] | None = None,
 ) -> FitResult:
     r"""Fit a rebound model to measured bounces, with honest uncertainties.
 
@@ -179,6 +210,12 @@ def fit(
         Level of the confidence intervals, in ``(0.5, 1)``.
     reference_speed : float, optional
         ``v_ref`` of the power law, m/s (default: geometric mean of ``|vy|``).
+    force : bool
+        Run a fit estimated to take over an hour (the rule of every long run,
+        :mod:`spinimpact._long`: one evaluation of the model timed, times the evaluations a
+        fit makes); without it such a fit raises :class:`~spinimpact._long.TooLong`.
+    announce : callable, optional
+        Called with the estimate before a fit estimated over a minute starts.
 
     Returns
     -------
@@ -284,7 +321,7 @@ def fit(
     prob = Problem(fm, bounces, theta, free)
     if "mu" not in held and "mu" not in begin:
         prob.theta[fm.names.index("mu")] = prob.scan_mu()
-    est = estimate(prob, prob.theta[free], conf, _scatter)
+    est = estimate(prob, prob.theta[free], conf, _scatter, force=force, announce=announce)
     if est.warning is not None:
         warnings.warn(est.warning, FitWarning, stacklevel=2)
     return _result(prob, est, conf, held)

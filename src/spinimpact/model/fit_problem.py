@@ -118,6 +118,8 @@ def fit_problem(
     tangential: Any = None,
     confidence: float = 0.95,
     start: Mapping[str, float] | None = None,
+    force: bool = False,
+    announce: Any = None,
 ) -> ProblemFit:
     r"""Fit the inputs of any registered problem to measured impacts.
 
@@ -154,6 +156,10 @@ def fit_problem(
     start : dict, optional
         Starting values of free parameters (by default: their declared defaults,
         ``kappa`` from the measured normal rebound, and a scan over ``mu``).
+
+    force, announce
+        As for :func:`spinimpact.fit`: a fit estimated over an hour is refused unless
+        ``force``; ``announce`` hears an estimate over a minute.
 
     Returns
     -------
@@ -455,7 +461,8 @@ def fit_problem(
         prob.theta[chosen.index("mu")] = prob.scan_mu()
     names_sigma = [f"sigma_{q}" for q in quantities]
     est = estimate(prob, prob.theta[free_arr], conf,
-                   lambda p, chi2: scatter(p, chi2, size, names_sigma))  # fmt: skip
+                   lambda p, chi2: scatter(p, chi2, size, names_sigma), force=force,
+                   announce=announce)  # fmt: skip
     if est.warning is not None:
         warnings.warn(est.warning, FitWarning, stacklevel=2)
     return _result(prob, est, conf, declared, law, law_spec, held, per_bounce, source,
