@@ -271,7 +271,9 @@ def chunk_head(chunk: Chunk, m: int) -> Chunk:
     if chunk.text is not None:  # read by Arrow: its lazy cells and numbers, sliced
         text = {k: t.slice(0, m) for k, t in chunk.text.items()}
         empty = {k: e[:m] for k, e in chunk.empty.items()}
-        return Chunk(chunk.first, _Cells(text), empty, chunk.lines, chunk.messages[:m].copy(),
+        # no line numbers: counting them would open a reader the chunk then carries (and a
+        # chunk sent to a Dask worker cannot); the trials' messages are not shown anyway
+        return Chunk(chunk.first, _Cells(text), empty, None, chunk.messages[:m].copy(),
                      text=text, numbers=_Numbers(text, empty))  # fmt: skip
     arrow = None if chunk.arrow is None else {k: a.slice(0, m) for k, a in chunk.arrow.items()}
     return Chunk(
