@@ -16,6 +16,7 @@ the body, each column's unit and dtype.
 from __future__ import annotations
 
 import contextlib
+import functools
 import json
 import math
 import numbers
@@ -113,6 +114,31 @@ FIELDS: dict[str, Callable[[dict, dict], Any]] = {
 #: Older field names, still accepted: alias -> the field it means. A field asked
 #: for by an alias is written under the alias, so existing scripts find their columns.
 ALIASES: dict[str, str] = {"energy_loss": "dissipated_fraction"}
+
+
+@functools.cache
+def _lookup(regimes: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
+    order = np.argsort(regimes)
+    return order, np.asarray(regimes)[order]
+
+
+def regime_codes(regime: np.ndarray, regimes: Sequence[str]) -> np.ndarray:
+    """Regime names -> their indices into ``regimes`` (int8), in one pass: how every sweep
+    stores its regimes (the names go into the file's description).
+
+    Raises
+    ------
+    ValueError
+        For a name not among ``regimes``.
+    """
+    order, names = _lookup(tuple(regimes))
+    regime = np.asarray(regime).astype(str)
+    at = np.clip(np.searchsorted(names, regime), 0, names.size - 1)
+    unknown = names[at] != regime
+    if unknown.any():
+        raise ValueError(f"regime {str(regime[np.argmax(unknown)])!r} is not among the regimes "
+                         f"{', '.join(regimes)}")  # fmt: skip
+    return order[at].astype(np.int8)
 
 
 def field_name(name: str, role: str = "fields") -> str:

@@ -31,7 +31,7 @@ from ..core.planar import PLANAR_REGIMES
 from ..model.planar import LAWS, PendulumImpact, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
 from ._axes import INPUTS, positive_int
-from ._fields import ALIASES
+from ._fields import ALIASES, regime_codes
 from .sweep import Sweep
 
 __all__ = ["PENDULUM_INPUTS", "PROCESS_FIELDS", "PlanarSweep", "planar_fields"]
@@ -55,8 +55,6 @@ PROCESS_FIELDS = (
     "tau1",
     "tangential_impulse",
 )
-_ORDER = np.argsort(PLANAR_REGIMES)
-_SORTED = np.asarray(PLANAR_REGIMES)[_ORDER]
 
 
 @functools.cache
@@ -223,21 +221,8 @@ class PlanarSweep(Sweep):
         return super().description() | {"law": self.law}
 
     def evaluate(self, k: int, fields: tuple[str, ...]) -> dict[str, np.ndarray]:
-        """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length.
-
-        Parameters
-        ----------
-        k : int
-            Chunk number, ``0 <= k < chunks``.
-        fields : tuple of str
-            Names from :func:`planar_fields` or aliases; each comes back under the name
-            asked for.
-
-        Returns
-        -------
-        dict
-            The inputs and the fields, in that order.
-        """
+        """As :meth:`Sweep.evaluate <spinimpact.io.sweep.Sweep.evaluate>`, the fields named
+        by :func:`planar_fields` (or aliases)."""
         c = self.chunk(k)
         out: dict[str, Any] = dict(c)
         wanted = {name: self.field_name(name) for name in fields}
@@ -245,7 +230,7 @@ class PlanarSweep(Sweep):
             columns = self._process(c)
         elif wanted:
             columns = self._solve(c)
-            columns["regime"] = _codes(columns["regime"])
+            columns["regime"] = regime_codes(columns["regime"], PLANAR_REGIMES)
         for name, f in wanted.items():
             out[name] = columns[f]
         n = self.chunk_length(k)
@@ -285,8 +270,3 @@ class PlanarSweep(Sweep):
         if self.pendulum:
             return solve_pendulum(self.body, c["omega"], **surface).columns()  # type: ignore[arg-type]
         return solve_planar(self.body, c["vx"], c["vy"], c["omega"], **surface).columns()
-
-
-def _codes(regime: np.ndarray) -> np.ndarray:
-    """Regime names -> their indices into ``PLANAR_REGIMES`` (int8), in one pass."""
-    return _ORDER[np.searchsorted(_SORTED, regime)].astype(np.int8)

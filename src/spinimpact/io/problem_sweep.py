@@ -48,7 +48,7 @@ from ..core.planar import PLANAR_REGIMES
 from ..model.registry import Problem
 from ..model.registry import problem as get_problem
 from ._axes import Axis, parse_axis
-from ._fields import ALIASES
+from ._fields import ALIASES, regime_codes
 from .problem_batch import result_kinds
 from .sweep import Sweep
 
@@ -365,17 +365,11 @@ class ProblemSweep(Sweep):
 
     def _codes(self, regime: np.ndarray) -> np.ndarray:
         """Regime names -> their indices into :attr:`regimes` (int8), in one pass."""
-        order, names = _lookup(self.regimes)
-        regime = np.asarray(regime).astype(str)
-        at = np.clip(np.searchsorted(names, regime), 0, names.size - 1)
-        unknown = names[at] != regime
-        if unknown.any():
-            raise ValueError(
-                f"problem {self.problem.name!r} gave regime {str(regime[np.argmax(unknown)])!r}, "
-                f"not among its regimes {', '.join(self.regimes)}: declare them "
-                "(Problem(regimes=...))"
-            )
-        return order[at].astype(np.int8)
+        try:
+            return regime_codes(regime, self.regimes)
+        except ValueError as exc:
+            raise ValueError(f"problem {self.problem.name!r}: {exc}: declare them "
+                             "(Problem(regimes=...))") from None  # fmt: skip
 
     def _check_finite(self, name: str, value: np.ndarray, k: int) -> None:
         bad = ~np.isfinite(value)
@@ -400,9 +394,3 @@ def _undeclared(declared: Problem) -> tuple[str, ...]:
     the package's laws name."""
     found = declared.solve(**declared.example).columns().get("regime", ())
     return tuple(dict.fromkeys((*map(str, np.unique(np.asarray(found))), *_ALL_REGIMES)))
-
-
-@functools.cache
-def _lookup(regimes: tuple[str, ...]) -> tuple[np.ndarray, np.ndarray]:
-    order = np.argsort(regimes)
-    return order, np.asarray(regimes)[order]

@@ -29,7 +29,7 @@ from .._validation import as_real_array, validated, whole
 from ..model.body import Body
 from ..model.sphere3d import SphereImpact, Surface, solve_sphere
 from ._axes import positive_int
-from ._fields import ALIASES
+from ._fields import ALIASES, regime_codes
 from .sweep import Sweep
 
 __all__ = ["SPHERE_INPUTS", "SphereSweep", "sphere_fields"]
@@ -38,8 +38,6 @@ __all__ = ["SPHERE_INPUTS", "SphereSweep", "sphere_fields"]
 SPHERE_INPUTS = ("vx", "vy", "vz", "wx", "wy", "wz", "mu", "kappa")
 #: The surface's columns: fixed for the sweep (in its description), not fields.
 _SURFACE = tuple(f"{v}_{c}" for v in ("normal", "surface_velocity") for c in "xyz")
-_ORDER = np.argsort(core.REGIMES)
-_SORTED = np.asarray(core.REGIMES)[_ORDER]
 
 
 @functools.cache
@@ -177,21 +175,8 @@ class SphereSweep(Sweep):
         return super().description() | {"surface": surface}
 
     def evaluate(self, k: int, fields: tuple[str, ...]) -> dict[str, np.ndarray]:
-        """Inputs and ``fields`` of chunk ``k``, each an array of the chunk's length.
-
-        Parameters
-        ----------
-        k : int
-            Chunk number, ``0 <= k < chunks``.
-        fields : tuple of str
-            Names from :func:`sphere_fields` or aliases; each comes back under the name
-            asked for.
-
-        Returns
-        -------
-        dict
-            The inputs and the fields, in that order.
-        """
+        """As :meth:`Sweep.evaluate <spinimpact.io.sweep.Sweep.evaluate>`, the fields named
+        by :func:`sphere_fields` (or aliases)."""
         c = self.chunk(k)
         out: dict[str, Any] = dict(c)
         wanted = {name: self.field_name(name) for name in fields}
@@ -200,13 +185,8 @@ class SphereSweep(Sweep):
             w = np.stack(np.broadcast_arrays(c["wx"], c["wy"], c["wz"]), axis=-1)
             imp = solve_sphere(self.body, v, w, mu=c["mu"], kappa=c["kappa"], surface=self.surface)
             columns = imp.columns()
-            columns["regime"] = _codes(columns["regime"])
+            columns["regime"] = regime_codes(columns["regime"], core.REGIMES)
             for name, f in wanted.items():
                 out[name] = columns[f]
         n = self.chunk_length(k)
         return {name: np.broadcast_to(value, (n,)) for name, value in out.items()}
-
-
-def _codes(regime: np.ndarray) -> np.ndarray:
-    """Regime names -> their indices into ``core.REGIMES`` (int8), in one pass."""
-    return _ORDER[np.searchsorted(_SORTED, regime)].astype(np.int8)
