@@ -36,8 +36,8 @@ demo: $(BASE)  ## solve the documented default impact and print the report
 test: $(STAMP)  ## run the whole test suite (what CI runs)
 	$(PY) -m pytest
 
-check: $(STAMP)  ## the everyday quick subset: every test but the slow and browser ones
-	$(PY) -m pytest -m "not slow and not browser"
+check: $(STAMP)  ## the everyday quick subset: every test but the slow and browser ones, 25 examples a property
+	SPINIMPACT_HYPOTHESIS=quick $(PY) -m pytest -m "not slow and not browser"
 
 bench: $(STAMP)  ## print benchmark ratios (not part of the tests)
 	$(PY) -m benchmarks.bench

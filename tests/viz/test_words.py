@@ -98,7 +98,8 @@ def test_dpi_has_help_text(command):
     out = _cli(command, "--help")
     assert out.returncode == 0
     block = out.stdout[out.stdout.index("\n  --dpi") + 1 :].split("\n  -")[0]
-    assert "pixels per inch" in " ".join(block.split()), block
+    text = " ".join(block.split())
+    assert "Image resolution, dots per inch." in text and "inchs" not in text, block
 
 
 @pytest.mark.slow

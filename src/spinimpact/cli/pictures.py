@@ -18,7 +18,6 @@ from ._vocabulary import help as _help
 
 __all__ = ["map_command", "figures_command"]
 
-_DPI_HELP = "Image resolution, dots per inch{}."
 
 
 def _check_target(output: str) -> str:
@@ -90,7 +89,7 @@ def _check_target(output: str) -> str:
     type=click.IntRange(50, 600),
     default=110,
     show_default=True,
-    help=_DPI_HELP.format(" (15 x 9.2 inches)"),
+    help=_help("dpi", "The figure is 15 x 9.2 inches."),
 )
 def map_command(output: str, extent: float, resolution: int, dpi: int, **options: Any) -> None:
     """Maps over the incidence at a fixed body, mu and kappa: regimes, rebound
@@ -149,7 +148,7 @@ def _case_option(name: str, help: str) -> Any:
     type=click.IntRange(50, 600),
     default=150,
     show_default=True,
-    help=_DPI_HELP.format("s"),
+    help=_help("dpi"),
 )
 @click.option(
     "--body",
