@@ -61,6 +61,7 @@ def test_report_holds_the_numbers_of_the_impact(page):
         assert f"<td>{_num(value)}</td>" in text, value
 
 
+@pytest.mark.slow  # renders a whole page or map (about a second)
 def test_report_is_self_contained(page):
     _, text, _ = page
     assert text.count('src="data:image/png;base64,') == 3

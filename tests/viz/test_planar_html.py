@@ -128,6 +128,7 @@ def test_labels_are_typeset_and_values_untouched():
     assert not any(re.search(r"tau|mu_hat", label) for label in labels)
 
 
+@pytest.mark.slow  # renders a whole page or map (about a second)
 def test_page_is_self_contained_and_names_the_regime(case):
     imp, text = case
     assert text.startswith("<!DOCTYPE html>")

@@ -192,6 +192,7 @@ def test_map_figure_panels():
     assert len(regime_ax.get_lines()) == 4
 
 
+@pytest.mark.slow  # renders a whole page or map (about a second)
 def test_friction_work_panel_shows_no_line_where_the_ratio_is_undefined():
     """On the no-slip line ``u^- = 0`` friction does no work and ``W_r^t/W_c^t`` is 0/0;
     its limit from both sides is 0 (the contact sticks in compression). Drawn as
