@@ -141,7 +141,8 @@ BALL = ["vx", "vy", "vz", "wx", "wy", "wz"]
     [
         (BALL, ["1", "x", "0", "0", "0", "0"], "row 2 (line 3), column vy: 'x' is not a number"),
         (BALL, ["1", "inf", "0", "0", "0", "0"], "column vy: vy must be finite"),
-        (BALL, ["1", "1", "0", "0", "0", "0"], "row 2 (line 3): the contact point's normal velocity must be < 0"),
+        (BALL, ["1", "1", "0", "0", "0", "0"],
+         "row 2 (line 3): the contact point's normal velocity must be < 0"),
         (BALL, ["1", "-1", "0", "0", "0"], "row 2 (line 3): expected 6 fields, got 5"),
         ([*BALL, "mu"], ["1", "-1", "0", "0", "0", "0", "-0.5"], "column mu: mu must be >= 0"),
         ([*BALL, "mass"], ["1", "-1", "0", "0", "0", "0", "0"], "column mass: mass must be > 0"),

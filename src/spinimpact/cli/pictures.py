@@ -19,7 +19,6 @@ from ._vocabulary import help as _help
 __all__ = ["map_command", "figures_command"]
 
 
-
 def _check_target(output: str) -> str:
     """The image format of ``--output``, after checking that the file can be written:
     done before anything is computed, so a bad path fails at once."""
