@@ -100,3 +100,12 @@ def test_a_planar_problem_with_a_law_per_row_equals_solve_planar_law_by_law():
                            kappa=0.9, law=law).columns()  # fmt: skip
         for name in ("after_vx", "after_omega", "energetic_restitution", "regime"):
             assert np.asarray(got[name])[i] == np.asarray(one[name]).reshape(-1)[0], (law, name)
+
+
+def test_an_optional_input_left_empty_takes_the_preset_row_by_row():
+    sphere = problem("sphere")
+    result = sphere.solve(vx=[2.0, 2.0], vy=-3.0, vz=0.0, wx=0.0, wy=0.0, wz=30.0,
+                          gyration=[np.nan, 0.05])  # fmt: skip
+    assert result.columns()["gyration"].tolist() == [0.1 * np.sqrt(0.4), 0.05]
+    with pytest.raises(ValueError, match="gyration must be > 0, got -1.0"):
+        sphere.solve(**sphere.example, gyration=[np.nan, -1.0])

@@ -314,10 +314,10 @@ class Problem:
         columns = self.columns(values)
         for name, column in columns.items():
             each = self.input(name)
-            if each.text and each.optional and not any(column):
-                continue
-            found = each.problems(column) if each.text or not np.isnan(column).all() else None
-            if found is not None and (found != "").any():
+            if each.optional:  # left empty (NaN, ""): the problem fills it (a preset's gyration)
+                column = column[column != ""] if each.text else column[~np.isnan(column)]
+            found = each.problems(column)
+            if (found != "").any():
                 raise ValueError(str(found[int(np.argmax(found != ""))]))
         return self.solver(columns, tangential=tangential)
 
