@@ -17,6 +17,7 @@ def run(*args):
     return subprocess.run(cmd, capture_output=True, text=True, timeout=60)
 
 
+@pytest.mark.slow
 def test_default_report_shows_every_section():
     out = run("solve")
     assert out.returncode == 0, out.stderr
@@ -36,6 +37,7 @@ def test_default_report_shows_every_section():
     assert out.stderr == ""
 
 
+@pytest.mark.slow
 def test_json_equals_python_api():
     out = run(
         "solve",
@@ -69,6 +71,7 @@ def test_json_equals_python_api():
     assert data["body"]["zeta"] == 3.0
 
 
+@pytest.mark.slow
 def test_json_is_strict_when_values_are_infinite():
     out = run("solve", "--mu", "0", "--json")
     assert out.returncode == 0
@@ -77,6 +80,7 @@ def test_json_is_strict_when_values_are_infinite():
     assert data["regime"] == "frictionless"
 
 
+@pytest.mark.slow
 def test_custom_body_with_gyration_spool():
     out = run("solve", "--radius", "0.01", "--gyration", "0.03", "--json")
     assert out.returncode == 0, out.stderr

@@ -27,6 +27,7 @@ def as_json(cli, *args):
     return json.loads(out)
 
 
+@pytest.mark.slow
 def test_sphere_json_equals_the_python_api():
     out = run("sphere", "--body", "spherical-shell", "--mass", 0.057, "--radius", 0.033,
               "--velocity", "20,-8,3", "--spin=-10,150,-200", "--normal", "0.1,1,-0.2",

@@ -319,6 +319,7 @@ def test_planar_bit_for_bit_from_python_and_compiled_code(name):
     assert same(out, np.array(got))
 
 
+@pytest.mark.slow
 def test_the_law_without_numba_is_plain_python():
     """With Numba missing, spinimpact.contact_law imports and computes the same numbers."""
     import subprocess

@@ -384,6 +384,7 @@ def _history_beta(r, zeta, slip=0.1):
     return -(run.vx[-1] + run.omega[-1]) / slip
 
 
+@pytest.mark.slow
 def test_no_slip_limit_matches_flat_punch_superposition():
     """mu -> infinity, kappa = 1: beta from this file's own integration of Mindlin and
     Deresiewicz's no-slip rule. nu = 0.23, zeta = 7/2: beta = -0.296203 (e_t = (5 - 2 beta)/7

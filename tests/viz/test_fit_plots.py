@@ -64,6 +64,7 @@ def test_corner_plot_of_three_parameters():
         plot_corner(fit(data(), BALL, fixed={"kappa": 0.8}))
 
 
+@pytest.mark.slow
 def test_corner_plot_of_a_friction_the_data_only_bound():
     d = data(same_speed=True)
     steep = d.select(d.incidence_angle_deg < 40.0)  # these bounces all stick
