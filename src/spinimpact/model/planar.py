@@ -17,7 +17,7 @@ import numpy as np
 from .. import core
 from .._validation import approach, as_real_array, broadcast, validated, whole
 from ..core import planar as kernels
-from . import _fast_planar
+from . import _fast_planar, _fused_planar
 from .impact import State, _restitution
 from .planar_body import Pendulum, PlanarBody
 from .result import Array, Result, freeze, regime_counts
@@ -295,6 +295,10 @@ def _solve(kind, body, vx, vy, omega, mu, kappa, law):  # type: ignore[no-untype
     u0, v0, mu_, kappa_, vx_, vy_, om_, a, b, d = np.broadcast_arrays(
         u0, v0, mu_, kappa_, vx_, vy_, om_, w.tt, w.tn, w.nn, *parts.values()
     )[:10]
+    many = _fused_planar.planar_impact(kind, State, body, law, vx_, vy_, om_, u0, v0, a, b, d,
+                                       mu_, kappa_)  # fmt: skip
+    if many is not None:  # many impacts: every field from one compiled pass, bit for bit
+        return many
     contact = (u0, v0, a, b, d, mu_)
     p = kernels.planar_process(*contact, kappa_, LAWS.index(law))
     vx1, vy1, om1 = body.apply_impulse(vx_, vy_, om_, p.friction_impulse, p.tau_end)

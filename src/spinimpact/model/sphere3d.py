@@ -18,7 +18,7 @@ import numpy as np
 from .. import core
 from .._validation import approach, check, validated, vector3, whole
 from ..core import sphere3d as kernels
-from . import _fast_sphere
+from . import _fast_sphere, _fused_sphere
 from ._hooks import tangential_law
 from .body import Body, as_body, check_sphere
 from .impact import _restitution
@@ -321,6 +321,9 @@ def solve_sphere(
     one = _fast_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
     if one is not None:  # one impact of plain numbers: the same SphereImpact, in microseconds
         return one
+    many = _fused_sphere.sphere_impact(body, velocity, spin, mu, kappa, surface, kinds)
+    if many is not None:  # many impacts: every field from one compiled pass, bit for bit
+        return many
     v, w, nrm, vs, m, radius, inertia, zeta, mu_, kappa_, c = _incidence(
         body, velocity, spin, mu, kappa, surface
     )
