@@ -13,11 +13,12 @@ They start at :data:`FIRST` points and grow :data:`GROWTH` times at each step, u
 largest size asked for (a chunk at most), while the trials so far and the next one fit in a
 time budget. The next trial's time is predicted from the last one's time per point (an
 overestimate: a small trial's cost per call weighs more on each point). The budget is a
-:data:`SHARE` of the time the whole run would take at the first trial's cost per point, at
-least :data:`MIN_SECONDS` and at most :data:`MAX_SECONDS`: a sweep of fast points (the rigid
-law, well under a microsecond a point) is measured on its first 262,144 points, one of slow
-points (a law that steps each impact in time, a millisecond a point) on about a thousand,
-and a small run in about a tenth of its own time.
+:data:`SHARE` of the time the whole run would take as the trials so far predict it
+(:func:`fit_line`: after one trial, at its cost per point; from the second on, a cost per
+call apart from a cost per point, so that a first trial dominated by its cost per call does
+not swell the budget), at least :data:`MIN_SECONDS` and at most :data:`MAX_SECONDS`: a run
+of slow points (a law that steps each impact in time, a millisecond a point) is measured on
+about a thousand, and a run of fast points in about a tenth of its own time.
 
 This module imports nothing of the package, so every layer may use it.
 """
@@ -119,11 +120,11 @@ def grow(
             if spent + predicted > budget:
                 break
         best, took = _seconds(trial(m), runs)
-        if not points:  # the sweep's time at the first trial's cost per point
-            budget = min(MAX_SECONDS, max(MIN_SECONDS, SHARE * best / m * sweep_points))
         points.append(m)
         seconds.append(best)
         spent += took
+        per_run, per_point = fit_line(tuple(points), tuple(seconds))  # the run, as now known
+        budget = min(MAX_SECONDS, max(MIN_SECONDS, SHARE * (per_run + per_point * sweep_points)))
     return Trials(tuple(points), tuple(seconds), spent)
 
 

@@ -238,11 +238,15 @@ class PlanarBatch:
         for i, message in sorted(found, key=lambda item: item[0]):
             if not messages[i]:
                 messages[i] = message
+        good = messages == ""
+        if good.all() and (law == law[0]).all():  # one solve of the rows as they are
+            whole = self._whole(values, law)
+            if whole is not None:
+                return values, whole, messages
         results = {
             name: np.full(n, np.nan) if kind == "float" else np.full(n, None, dtype=object)
             for name, kind in self.kinds.items()
         }
-        good = messages == ""
         for name in ("mu", "kappa"):
             if name in results:
                 results[name][good] = values[name][good]
@@ -259,6 +263,28 @@ class PlanarBatch:
                     column[rows] = solved if self.kinds[name] == "float" else solved.tolist()
         self._check_finite(chunk, results, messages)
         return values, results, messages
+
+    def _whole(self, values: dict[str, np.ndarray], law: np.ndarray) -> dict | None:
+        """Every row solved at once under its one law, the solver's columns as they are, or
+        ``None`` where a result is not finite (then :meth:`_check_finite` names its row)."""
+        columns = self._solve_rows(values, str(law[0]))
+        out = {}
+        for name, kind in self.kinds.items():
+            if name in SETTINGS:
+                out[name] = law if name == "law" else values[name]
+                continue
+            column = np.asarray(columns[name])
+            if kind == "float" and not self._finite(name, column).all():
+                return None
+            out[name] = column
+        return out
+
+    @staticmethod
+    def _finite(name: str, column: np.ndarray) -> np.ndarray:
+        ok = np.isfinite(column)
+        if name in _MAY_BE_INFINITE:
+            ok |= np.isinf(column)
+        return ok
 
     def _solve_rows(self, v: dict[str, np.ndarray], law: str) -> dict[str, np.ndarray]:
         surface = {"mu": v["mu"], "kappa": v["kappa"], "law": law}
@@ -307,15 +333,12 @@ class PlanarBatch:
     def _check_finite(self, chunk: Chunk, results: dict, messages: np.ndarray) -> None:
         """Rows with a non-finite result (inputs too far apart in scale) become bad rows."""
         bad = np.zeros(messages.size, bool)
+        good = messages == ""
         for name, kind in self.kinds.items():
             if kind != "float" or name in SETTINGS:
                 continue
             column = results[name]
-            wrong = (
-                (messages == "")
-                & ~bad
-                & ~(np.isfinite(column) | (np.isinf(column) & (name in _MAY_BE_INFINITE)))
-            )
+            wrong = good & ~bad & ~self._finite(name, column)
             for i in np.flatnonzero(wrong):
                 messages[i] = (
                     f"{chunk.where(i)}: {name} is {float(column[i])!r}, not a finite number: the "

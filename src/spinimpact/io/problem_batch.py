@@ -212,12 +212,43 @@ class ProblemBatch:
         messages = chunk.messages.copy()
         for i, message in sorted(found, key=lambda item: item[0]):
             messages[i] = messages[i] or message
+        numeric = {k: v for k, v in values.items() if k in self.numeric}
+        if (messages == "").all():  # every row read well: solve them as they are, no copies
+            whole = self._whole(values)
+            if whole is not None:
+                return numeric, whole, messages
         results = {
             name: np.full(n, np.nan) if kind == "float" else np.full(n, None, object)
             for name, kind in self.kinds.items()
         }
         self._solve_rows(np.flatnonzero(messages == ""), chunk, values, results, messages)
-        return {k: v for k, v in values.items() if k in self.numeric}, results, messages
+        return numeric, results, messages
+
+    def _whole(self, values: dict) -> dict | None:
+        """Every row solved at once, the solver's columns as they are (float, text and flag
+        arrays), or ``None`` where a row fails (then :meth:`_solve_rows` names it)."""
+        try:
+            with np.errstate(all="ignore"):
+                columns = self.problem.solver(values, tangential=self.law).columns()
+        except (ValueError, TypeError, ArithmeticError):
+            return None
+        out = {}
+        for name, kind in self.kinds.items():
+            column = np.asarray(columns[name])
+            if kind == "float" and not self._finite(name, column).all():
+                return None
+            out[name] = column
+        return out
+
+    def _finite(self, name: str, column: np.ndarray) -> np.ndarray:
+        """Where a float result column holds what it may: a finite number, or the infinity
+        or NaN its problem allows there."""
+        ok = np.isfinite(column)
+        if name in self.problem.may_be_infinite:
+            ok |= np.isinf(column)
+        if name in self.problem.may_be_nan:
+            ok |= np.isnan(column)
+        return ok
 
     def _names(self, chunk: Chunk, each: Any, default: Any, note: Callable) -> np.ndarray:
         n = chunk.messages.size
@@ -277,11 +308,7 @@ class ProblemBatch:
             solved = np.asarray(columns[name])
             if self.kinds[name] == "float":
                 column[rows] = solved
-                wrong = ~np.isfinite(solved)
-                if name in self.problem.may_be_infinite:
-                    wrong &= ~np.isinf(solved)
-                if name in self.problem.may_be_nan:
-                    wrong &= ~np.isnan(solved)
+                wrong = ~self._finite(name, solved)
                 for k in np.flatnonzero(wrong & ~bad):
                     first[k] = f"{name} is {float(solved[k])!r}"
                 bad |= wrong
