@@ -170,3 +170,33 @@ def test_the_first_bad_row_stops_the_run_with_the_same_message(tmp_path, monkeyp
             with pytest.raises(BatchError, match=r"^row 701 \(line 702\), column mu: mu must"):
                 run_batch(source, tmp_path / "out.csv", defaults=DEFAULTS, chunk_size=128)
         assert not (tmp_path / "out.csv").exists()
+
+
+#: Cells of a column without empty cells, which Arrow reads in one cast: the finite
+#: numbers it reads must be Python's, and every other cell must go to the Python rules.
+_WHOLE_COLUMN = [
+    "1", "+1", "-1.5", ".5", "5.", "1e5", "1E+05", "1.e5", "+.5e-3", "-0", "0001",
+    "1.7976931348623157e308", "4.9e-324", "1e-400", "inf", "-Infinity", "nan", "NaN",
+    "+nan", "nan(1)", "1e999", "-1e999", "1_000", "0x10", "1,5", "1d5", "\u0663", "1e",
+    "e5", "+", ".", "1..2", "--1", "1e5e5", "infx", "0x1p3",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("bad", [None, *_WHOLE_COLUMN])
+def test_a_column_read_in_one_cast_is_read_as_cell_by_cell(bad):
+    pa = pytest.importorskip("pyarrow")
+    good = ["1", "-2.5", "3e-3", ".25", "1.e2"]
+    cells = good + ([] if bad is None else [bad])
+    text = {"c": pa.array(cells)}
+    empty = np.zeros(len(cells), bool)
+    values, rest = _arrow_csv._Numbers(text, {"c": empty})("c")
+    expected = [float(c) for c in good]
+    assert values[: len(good)].tolist() == expected
+    if bad is None:
+        assert rest.size == 0
+        return
+    read = float(bad) if _tables._PLAIN.fullmatch(bad) else None
+    if read is not None and np.isfinite(read):  # a plain finite number: read here
+        assert rest.size == 0 and values[-1] == read
+    else:  # anything else: left to the Python rules (which read or refuse it by its text)
+        assert rest.tolist() == [len(good)] and np.isnan(values[-1])

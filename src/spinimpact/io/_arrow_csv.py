@@ -214,6 +214,17 @@ class _Numbers:
         import pyarrow.compute as pc
 
         col, empty = self.text[name], self.empty[name]
+        if not empty.any():  # the usual column: Arrow reads every cell, or this is skipped
+            try:
+                values = np.array(pc.cast(col, pa.float64()).to_numpy(zero_copy_only=False))
+            except pa.ArrowInvalid:
+                pass  # a cell that is no number: found below
+            else:
+                # a finite number Arrow read is a cell of digits, sign, point and exponent
+                # alone, read as below; "inf", "nan" and overflows go to the Python rules
+                odd = ~np.isfinite(values)
+                values[odd] = np.nan
+                return values, np.flatnonzero(odd)
         plain = pc.and_(pc.equal(pc.utf8_trim(col, characters=_NUMBER_CHARS), ""),
                         pa.array(~empty))  # fmt: skip
         try:
