@@ -182,14 +182,17 @@ _WHOLE_COLUMN = [
 ]  # fmt: skip
 
 
+@pytest.mark.parametrize("stripped_first", [False, True])
 @pytest.mark.parametrize("bad", [None, *_WHOLE_COLUMN])
-def test_a_column_read_in_one_cast_is_read_as_cell_by_cell(bad):
+def test_a_column_read_in_one_cast_is_read_as_cell_by_cell(bad, stripped_first):
     pa = pytest.importorskip("pyarrow")
     good = ["1", "-2.5", "3e-3", ".25", "1.e2"]
     cells = good + ([] if bad is None else [bad])
-    text = {"c": pa.array(cells)}
-    empty = np.zeros(len(cells), bool)
-    values, rest = _arrow_csv._Numbers(text, {"c": empty})("c")
+    source = _arrow_csv._Source({"c": pa.chunked_array([cells[:2], cells[2:]])})
+    if stripped_first:  # its text made first (as a chunk's head for the trials makes it)
+        assert source.text["c"].to_pylist() == cells
+    values, rest = _arrow_csv._Numbers(source)("c")
+    assert source.text["c"].to_pylist() == cells and not source.empty["c"].any()
     expected = [float(c) for c in good]
     assert values[: len(good)].tolist() == expected
     if bad is None:
@@ -200,3 +203,18 @@ def test_a_column_read_in_one_cast_is_read_as_cell_by_cell(bad):
         assert rest.size == 0 and values[-1] == read
     else:  # anything else: left to the Python rules (which read or refuse it by its text)
         assert rest.tolist() == [len(good)] and np.isnan(values[-1])
+
+
+@pytest.mark.parametrize("cells", [["1", " 2", "3"], ["1", "", "3"], ["1", "2\u00a0", "x"]])
+def test_a_column_with_blanks_or_empty_cells_is_stripped_then_read(cells):
+    pa = pytest.importorskip("pyarrow")
+    source = _arrow_csv._Source({"c": pa.chunked_array([cells])})
+    values, rest = _arrow_csv._Numbers(source)("c")
+    stripped = [c.strip() for c in cells]
+    assert source.text["c"].to_pylist() == stripped
+    assert source.empty["c"].tolist() == [c == "" for c in stripped]
+    plain = [_tables._PLAIN.fullmatch(c) is not None for c in stripped]
+    assert [float(c) if p else None for c, p in zip(stripped, plain, strict=True)] == [
+        None if np.isnan(v) else v for v in values.tolist()
+    ]
+    assert rest.tolist() == [i for i, c in enumerate(stripped) if c and not plain[i]]

@@ -149,17 +149,64 @@ def _batches(reader: Any) -> Iterator[Any]:
 
 def _chunk(counter: _LineCounter, header: list[str], table: Any, first: int) -> Chunk:
     n = table.num_rows
-    text = {name: _stripped(table.column(j)) for j, name in enumerate(header)}
-    empty = {name: _is_empty(col) for name, col in text.items()}
+    source = _Source({name: table.column(j) for j, name in enumerate(header)})
     return Chunk(
         first,
-        _Cells(text),
-        empty,
+        _Cells(source.text),
+        source.empty,
         _Lines(counter, first, n),
         np.full(n, "", dtype=object),
-        text=text,
-        numbers=_Numbers(text, empty),
+        text=source.text,
+        numbers=_Numbers(source),
     )
+
+
+class _Made(Mapping):
+    """A mapping whose values ``make(name)`` makes when first asked for (one per name of
+    ``names``); ``made`` holds those made so far."""
+
+    def __init__(self, make: Callable[[str], Any], names: list[str]) -> None:
+        self.make, self.names, self.made = make, names, {}
+
+    def __getitem__(self, name: str) -> Any:
+        if name not in self.made:
+            if name not in self.names:
+                raise KeyError(name)
+            self.made[name] = self.make(name)
+        return self.made[name]
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.names
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.names)
+
+    def __len__(self) -> int:
+        return len(self.names)
+
+
+class _Source:
+    """A chunk's columns as Arrow read them, and, made on first use, each one's text
+    (:func:`_stripped`) and empty cells (:func:`_is_empty`): a column of numbers alone,
+    read in one cast by :class:`_Numbers`, needs neither."""
+
+    def __init__(self, raw: dict[str, Any]) -> None:
+        self.raw = raw
+        self.text = _Made(self._text, list(raw))
+        self.empty = _Made(self._empty, list(raw))
+
+    def _text(self, name: str) -> Any:
+        return _stripped(self.raw[name])
+
+    def _empty(self, name: str) -> np.ndarray:
+        return _is_empty(self.text[name])
+
+    def head(self, m: int) -> _Source:
+        """The first ``m`` rows, with what is made so far."""
+        out = _Source({k: c.slice(0, m) for k, c in self.raw.items()})
+        out.text.made = {k: t.slice(0, m) for k, t in self.text.made.items()}
+        out.empty.made = {k: e[:m] for k, e in self.empty.made.items()}
+        return out
 
 
 def _stripped(column: Any) -> Any:
@@ -180,7 +227,7 @@ def _is_empty(col: Any) -> np.ndarray:
 class _Cells(Mapping):
     """The text cells by column, as object arrays of ``str``, made when first asked for."""
 
-    def __init__(self, text: dict[str, Any]) -> None:
+    def __init__(self, text: Mapping[str, Any]) -> None:
         self.text = text
         self.made: dict[str, np.ndarray] = {}
 
@@ -204,8 +251,8 @@ class _Cells(Mapping):
 class _Numbers:
     """``numbers(name)``: the column's plain numbers read by Arrow, and the rows left."""
 
-    def __init__(self, text: dict[str, Any], empty: dict[str, np.ndarray]) -> None:
-        self.text, self.empty = text, empty
+    def __init__(self, source: _Source) -> None:
+        self.source = source
 
     def __call__(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """Float64 values (NaN where empty or not plain) and the indices of the non-empty
@@ -213,18 +260,27 @@ class _Numbers:
         import pyarrow as pa
         import pyarrow.compute as pc
 
-        col, empty = self.text[name], self.empty[name]
-        if not empty.any():  # the usual column: Arrow reads every cell, or this is skipped
+        text, empty_ = self.source.text, self.source.empty
+        if name not in text.made:  # the usual column: Arrow reads every cell as it is
+            col = self.source.raw[name]
+            col = col.combine_chunks() if isinstance(col, pa.ChunkedArray) else col
+            try:
+                values = np.array(pc.cast(col, pa.float64()).to_numpy(zero_copy_only=False))
+            except pa.ArrowInvalid:
+                pass  # an empty cell, blanks around a number, or no number: found below
+            else:
+                # each cell is a number, with nothing to strip: the text is the cell
+                text.made[name] = col
+                empty_.made[name] = np.zeros(len(col), bool)
+                return self._finite(values)
+        col, empty = text[name], empty_[name]
+        if not empty.any():  # stripped, a column without empty cells may still cast whole
             try:
                 values = np.array(pc.cast(col, pa.float64()).to_numpy(zero_copy_only=False))
             except pa.ArrowInvalid:
                 pass  # a cell that is no number: found below
             else:
-                # a finite number Arrow read is a cell of digits, sign, point and exponent
-                # alone, read as below; "inf", "nan" and overflows go to the Python rules
-                odd = ~np.isfinite(values)
-                values[odd] = np.nan
-                return values, np.flatnonzero(odd)
+                return self._finite(values)
         plain = pc.and_(pc.equal(pc.utf8_trim(col, characters=_NUMBER_CHARS), ""),
                         pa.array(~empty))  # fmt: skip
         try:
@@ -236,6 +292,15 @@ class _Numbers:
         values = values.to_numpy(zero_copy_only=False).copy()
         values[~read] = np.nan
         return values, np.flatnonzero(~read & ~empty)
+
+    @staticmethod
+    def _finite(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """A column Arrow cast whole: a finite number it read is a cell of digits, sign,
+        point and exponent alone, read as the plain-number path reads it; ``inf``, ``nan``
+        and overflows are left to the Python rules, as there."""
+        odd = ~np.isfinite(values)
+        values[odd] = np.nan
+        return values, np.flatnonzero(odd)
 
 
 class _LineCounter:
@@ -279,13 +344,13 @@ def chunk_head(chunk: Chunk, m: int) -> Chunk:
     Parquet), as a chunk of their own: the trials of a batch's estimate
     (:mod:`spinimpact._long`). Row ``i`` of the head is row ``i`` of the chunk."""
     m = min(m, chunk.messages.size)
-    if chunk.text is not None:  # read by Arrow: its lazy cells and numbers, sliced
-        text = {k: t.slice(0, m) for k, t in chunk.text.items()}
-        empty = {k: e[:m] for k, e in chunk.empty.items()}
+    if isinstance(chunk.numbers, _Numbers):  # read by Arrow: its lazy cells and numbers
+        source = chunk.numbers.source.head(m)
         # no line numbers: counting them would open a reader the chunk then carries (and a
         # chunk sent to a Dask worker cannot); the trials' messages are not shown anyway
-        return Chunk(chunk.first, _Cells(text), empty, None, chunk.messages[:m].copy(),
-                     text=text, numbers=_Numbers(text, empty))  # fmt: skip
+        return Chunk(chunk.first, _Cells(source.text), source.empty, None,
+                     chunk.messages[:m].copy(), text=source.text,
+                     numbers=_Numbers(source))  # fmt: skip
     arrow = None if chunk.arrow is None else {k: a.slice(0, m) for k, a in chunk.arrow.items()}
     return Chunk(
         chunk.first,
