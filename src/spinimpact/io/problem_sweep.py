@@ -9,6 +9,11 @@ others stay at the values given or else at the declaration's defaults, and text 
 it as any sweep: chunk by chunk, to Parquet, CSV or ``.npy`` files, folding regime
 fractions and histograms on the fly, locally or on Dask.
 
+The files hold a column for each axis; inputs held at one value for the whole sweep
+(``fixed=``, and a body object's numbers, ``body=``) are written in the files'
+description instead (``"fixed"``, ``"body"``), with the problem, the regimes' names, the
+axes and the tangential law.
+
 Each chunk is solved by the problem's own solver at once (:attr:`Problem.solver
 <spinimpact.Problem>`), so the fields are the result's columns that are not inputs
 (:meth:`Problem.outputs <spinimpact.Problem.outputs>`), the very numbers the problem's
@@ -16,7 +21,12 @@ function gives, each with the unit the declaration gives it (:meth:`Problem.unit
 <spinimpact.Problem.unit>`). ``regime`` is written as names (a dictionary column in
 Parquet, text in CSV; in ``.npy`` files the index into the ``"regimes"`` of
 ``metadata.json``); true/false columns as flags. Text columns other than the regime
-(``min_energy_case``) are left to ``spinimpact batch``.
+(``min_energy_case``) are left to ``spinimpact batch``. Where the problem declares a
+cheaper solver for some columns (:attr:`Problem.partial <spinimpact.Problem>`: a planar
+body's impact process without its works), a sweep asking for those alone calls it, and
+where it declares a check of a box of inputs (:attr:`Problem.check_ranges
+<spinimpact.Problem>`: a contact point that must approach everywhere), a sweep is refused
+in its words before it computes.
 
 Random points depend on the seed alone, as in every sweep: each uniform input draws from
 its own stream (:func:`~spinimpact.io._axes.uniform_stream`).
@@ -45,8 +55,10 @@ from .. import core
 from .._validation import whole
 from ..core.compliance import COMPLIANT_REGIMES
 from ..core.planar import PLANAR_REGIMES
-from ..model.registry import Problem
+from ..model.body import Body, as_body
+from ..model.registry import Input, Problem
 from ..model.registry import problem as get_problem
+from ..model.result import BodyColumns
 from ._axes import Axis, parse_axis
 from ._fields import ALIASES, regime_codes
 from .problem_batch import result_kinds
@@ -58,6 +70,8 @@ __all__ = ["ProblemSweep", "problem_fields"]
 _ALL_REGIMES = tuple(dict.fromkeys((*core.REGIMES, *PLANAR_REGIMES, *COMPLIANT_REGIMES)))
 #: The most corners of a sweep solved before it runs (12 varying inputs).
 _CORNERS = 4096
+#: The text input that a body's preset name fills (``body``: ``"solid-sphere"``).
+_PRESET = "body"
 
 
 @functools.cache
@@ -65,21 +79,57 @@ def _fields(declared: Problem, law: Any) -> dict[str, str]:
     kinds = result_kinds(declared, law)
     return {
         n: kinds[n]
-        for n in declared.outputs(declared.names)
-        if kinds.get(n, "float") != "text" or n == "regime"
+        for n in declared.outputs(declared.names, columns=kinds)
+        if kinds[n] != "text" or n == "regime"
     }
 
 
-def problem_fields(problem: str | Problem, tangential: Any = None) -> tuple[str, ...]:
+def problem_fields(
+    problem: str | Problem, tangential: Any = None, body: Any = None
+) -> tuple[str, ...]:
     """The fields of a problem's sweep: its result's columns that are not inputs (text
     columns other than ``regime`` left out), under the ``tangential`` law.
+
+    Parameters
+    ----------
+    problem : str or Problem
+    tangential : TangentialLaw, optional
+    body : optional
+        A body, or its class (:class:`~spinimpact.Body`, :class:`~spinimpact.PlanarBody`,
+        :class:`~spinimpact.Pendulum`), that the sweep is given: its columns (a sphere's
+        ``zeta``) are the body's, in the files' description, not fields.
 
     Examples
     --------
     >>> problem_fields("pair")[:3]
     ('regime', 'ball1_mass', 'ball1_radius')
+    >>> problem_fields("sphere", body=Body)[:3]
+    ('regime', 'after_vx', 'after_vy')
     """
-    return tuple(_fields(get_problem(problem), tangential))
+    skip = getattr(body, "COLUMNS", ())
+    return tuple(n for n in _fields(get_problem(problem), tangential) if n not in skip)
+
+
+def _text_value(each: Input, value: Any) -> str:
+    """``value`` of text input ``each``: one of its choices, else an error naming them."""
+    if not isinstance(value, str):
+        raise TypeError(
+            f"{each.name} must be one of {', '.join(each.choices or ())}, got {value!r}"
+        )
+    if value not in (each.choices or ()):
+        raise ValueError(
+            f"{each.name} must be one of {', '.join(each.choices or ())}, got {value!r}"
+        )
+    return value
+
+
+def _is_preset(body: Body) -> bool:
+    """Whether ``body`` is its named preset, to the last bit of its gyration and zeta."""
+    try:
+        preset = Body.preset(body.name, mass=body.mass, radius=body.radius)
+    except (TypeError, ValueError):
+        return False
+    return bool(preset.gyration == body.gyration and preset.zeta == body.zeta)
 
 
 @dataclass(frozen=True)
@@ -95,7 +145,9 @@ class ProblemSweep(Sweep):
         name, an axis's text (``"2"``, ``"-5:5:101"``, ``"grid:-5:5:101"``,
         ``"uniform:-5:5"``: :func:`~spinimpact.io.sweep.parse_axis`) or a number, for a
         numeric input; a name among its choices for a text input (``body="spherical-shell"``).
-        Inputs not given take the declaration's defaults; an input without one must be given.
+        Each numeric input given here, or left to its default, is a column of the files.
+        Inputs given nowhere take the declaration's defaults; an input without one must be
+        given.
     samples, seed
         As for :class:`~spinimpact.io.sweep.Sweep`.
     chunk_size : int
@@ -106,21 +158,33 @@ class ProblemSweep(Sweep):
         <spinimpact.Problem>`).
     text : dict, optional
         Text inputs' values, as ``axes`` may also give them.
-    body
-        Unused: a problem's body is among its inputs.
+    fixed : dict, optional
+        Inputs held at one value for the whole sweep (a number, or a name for a text
+        input), written in the files' description (``"fixed"``) instead of as columns:
+        ``fixed={"normal_x": 0.2, ...}`` for a tilted surface, ``fixed={"law": "newton"}``.
+    body : Body, Ball, PlanarBody or Pendulum, optional
+        One body, whose numbers are held fixed: its columns (``Body.COLUMNS``,
+        ``PlanarBody.COLUMNS``...) that are inputs of the problem take its values, a body
+        that is one of the presets of the problem's ``body`` input is given by that name
+        (so the solver uses the preset's exact ``zeta``), and the files' description holds
+        it whole (``"body"``: :meth:`~spinimpact.Body.to_dict`). A
+        :meth:`Body.from_zeta <spinimpact.Body.from_zeta>` body is given by its radius of
+        gyration, whose ``zeta`` can differ from its own in the last bit.
 
     Raises
     ------
     TypeError
-        For a ``problem`` that is neither a name nor a Problem, ``axes`` that is not a dict,
-        a value of the wrong type (a number for a text input), or a bad ``samples`` or
-        ``chunk_size``.
+        For a ``problem`` that is neither a name nor a Problem, ``axes``, ``text`` or
+        ``fixed`` that is not a dict, a value of the wrong type (a number for a text input),
+        a ``body`` that is not a body, or a bad ``samples`` or ``chunk_size``.
     ValueError
         For an unknown problem or input (the message lists the valid ones), a required
-        input without a value (all of them named), a vector given in part, a value that
-        breaks its input's rule at an end of its axis (``mu < 0``), grid and random axes
-        mixed, a tangential law the problem does not take, or a corner of the sweep the
-        problem's solver refuses (a contact that does not approach).
+        input without a value (all of them named), an input given twice with two values, a
+        vector given in part, an array of bodies, a value that breaks its input's rule at
+        an end of its axis (``mu < 0``), grid and random axes mixed, a tangential law the
+        problem does not take, a box of inputs the problem refuses (:attr:`Problem.check_ranges
+        <spinimpact.Problem>`: a contact that does not approach somewhere), or a corner of
+        the sweep the problem's solver refuses.
 
     Examples
     --------
@@ -130,6 +194,18 @@ class ProblemSweep(Sweep):
     ('vx', 'vy', 'omega', 'mu', 'kappa', 'mass', 'radius')
     >>> run_sweep(sweep).points
     5
+
+    A body and a surface held fixed: the columns are the incidence, ``mu`` and ``kappa``.
+
+    >>> ball = Body.spherical_shell(mass=0.057, radius=0.033)
+    >>> tilted = dict(normal_x=0.2, normal_y=1.0, normal_z=-0.1)
+    >>> at_rest = dict(surface_velocity_x=0, surface_velocity_y=0, surface_velocity_z=0)
+    >>> spec = dict(vx="-2:2:5", vy=-3, vz=0, wx=0, wy=0, wz=30, mu=0.3, kappa=0.8)
+    >>> sweep = ProblemSweep(problem="sphere", body=ball, axes=spec, fixed=tilted | at_rest)
+    >>> sweep.inputs
+    ('vx', 'vy', 'vz', 'wx', 'wy', 'wz', 'mu', 'kappa')
+    >>> sweep.description()["fixed"]["normal_x"], sweep.description()["body"]["name"]
+    (0.2, 'spherical-shell')
     """
 
     body: Any = None
@@ -141,11 +217,13 @@ class ProblemSweep(Sweep):
     #: Text inputs -> their value (a preset, a law), as ``axes`` may give them too; after
     #: construction every text input's (``""`` for an optional one unset).
     text: dict[str, str] = field(default_factory=dict)
+    #: Inputs held at one value, not columns (numbers, or names for text inputs).
+    fixed: dict[str, Any] = field(default_factory=dict)
+    #: The numeric inputs held fixed (from ``body`` and ``fixed``) -> their value.
+    _held: dict[str, float] = field(init=False, repr=False, default_factory=dict)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "seed", whole("seed", self.seed, 0))
-        if self.body is not None:
-            raise TypeError("a problem's sweep takes its body from the problem's inputs, not body=")
         if self.problem is None:
             raise TypeError("problem must be a registered problem's name or a Problem, got None")
         declared = get_problem(self.problem)
@@ -154,7 +232,7 @@ class ProblemSweep(Sweep):
             raise ValueError(
                 f"a tangential law does not apply to problem {declared.name!r} ({declared.summary})"
             )
-        for name in ("axes", "text"):
+        for name in ("axes", "text", "fixed"):
             if not isinstance(getattr(self, name), dict):
                 raise TypeError(
                     f"{name} must be a dict of input name -> value, got {getattr(self, name)!r}"
@@ -162,36 +240,97 @@ class ProblemSweep(Sweep):
         twice = sorted(set(self.axes) & set(self.text))
         if twice:
             raise ValueError(f"{', '.join(twice)} given in both axes and text: give each once")
-        axes, text = self._values(declared)
+        held = self._held_values(declared)
+        axes, text = self._values(declared, held)
         object.__setattr__(self, "axes", axes)
         object.__setattr__(self, "text", text)
+        numbers_ = {n: v for n, v in held.items() if not declared.input(n).text}
+        object.__setattr__(self, "_held", numbers_)
         self._check_axes()  # kinds, samples, chunk size, size (Sweep's checks)
         for name, a in axes.items():  # the rules hold over [lo, hi] where they hold at its ends
             ends = np.asarray([a.lo] if a.kind == "fixed" else [a.lo, a.hi])
             found = declared.input(name).problems(ends)
             if (found != "").any():
                 raise ValueError(str(found[int(np.argmax(found != ""))]))
+        if declared.check_ranges is not None:
+            ranges = {n: (a.lo, a.lo if a.kind == "fixed" else a.hi) for n, a in axes.items()}
+            message = declared.check_ranges(ranges | {n: (v, v) for n, v in numbers_.items()})
+            if message:
+                raise ValueError(message)
         self._check_corners()
         object.__setattr__(self, "_body", {})
 
-    def _values(self, declared: Problem) -> tuple[dict[str, Axis], dict[str, str]]:
+    def _from_body(self, declared: Problem) -> dict[str, Any]:
+        """The inputs ``body`` holds fixed: its columns that are inputs of the problem, a
+        preset by its name."""
+        b = self.body
+        if b is None:
+            return {}
+        if not isinstance(b, BodyColumns):
+            try:
+                b = as_body(b)
+            except TypeError:
+                raise TypeError(
+                    "body must be a spinimpact.Body, Ball, PlanarBody or Pendulum, got "
+                    f"{type(b).__name__}"
+                ) from None
+            object.__setattr__(self, "body", b)
+        out: dict[str, Any] = {}
+        for name in b.COLUMNS:
+            if name in declared.names:
+                value = np.asarray(getattr(b, name), dtype=float)
+                if value.ndim:
+                    raise ValueError("a sweep needs a single body, not an array of bodies")
+                out[name] = float(value)
+        if not out:
+            raise ValueError(
+                f"problem {declared.name!r} has no input of a {type(b).__name__} "
+                f"({', '.join(b.COLUMNS)}): give the body's inputs in fixed"
+            )
+        choices = declared.input(_PRESET).choices if _PRESET in declared.names else None
+        if isinstance(b, Body) and b.name in (choices or ()) and _is_preset(b):
+            out = {n: v for n, v in out.items() if not declared.input(n).optional}
+            out[_PRESET] = b.name  # the preset's exact zeta, not 1 + (R/rho)**2
+        return out
+
+    def _held_values(self, declared: Problem) -> dict[str, Any]:
+        """The inputs held fixed, from ``body`` and ``fixed``, checked, in the declaration's
+        order."""
+        held = self._from_body(declared)
+        for name, value in self.fixed.items():
+            each = declared.input(name)  # a ValueError listing the inputs
+            if each.text:
+                value = _text_value(each, value)
+            elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+                value = float(value)
+                found = each.problems(np.asarray([value]))[0]
+                if found:
+                    raise ValueError(found)
+            else:
+                raise TypeError(f"fixed[{name!r}] must be a number, got {value!r}")
+            if name in held and held[name] != value:
+                raise ValueError(f"{name} is given twice: {held[name]!r} by the body and "
+                                 f"{value!r} in fixed")  # fmt: skip
+            held[name] = value
+        return {n: held[n] for n in declared.names if n in held}
+
+    def _values(
+        self, declared: Problem, held: dict[str, Any]
+    ) -> tuple[dict[str, Axis], dict[str, str]]:
         """Every input's axis (numeric) or value (text): given, else the default."""
         axes: dict[str, Axis] = {}
         text: dict[str, str] = {}
         for name, value in {**self.axes, **self.text}.items():
             each = declared.input(name)  # a ValueError listing the inputs
             if each.text:
-                if not isinstance(value, str):
-                    raise TypeError(
-                        f"{name} must be one of {', '.join(each.choices)}, got {value!r}"
-                    )
-                if value not in each.choices:
-                    raise ValueError(
-                        f"{name} must be one of {', '.join(each.choices)}, got {value!r}"
-                    )
-                text[name] = value
+                text[name] = _text_value(each, value)
+                if name in held and held[name] != value:
+                    raise ValueError(f"{name} is given twice: {value!r} and {held[name]!r}")
             elif name in self.text:
                 raise TypeError(f"text gives text inputs only; {name} is a number: give it in axes")
+            elif name in held:
+                raise ValueError(f"{name} is given twice: as an axis and held fixed (by fixed "
+                                 "or the body); give it once")  # fmt: skip
             elif isinstance(value, Axis):
                 if value.name != name:
                     raise ValueError(
@@ -208,28 +347,32 @@ class ProblemSweep(Sweep):
                     f"{name} must be a number, an Axis or an axis's text (START:STOP:NUM, "
                     f"uniform:LOW:HIGH), got {value!r}"
                 )
+        text.update({n: v for n, v in held.items() if declared.input(n).text})
         missing = []
         for each in declared.inputs:
             if each.text:
                 default = "" if each.default is None else str(each.default)
                 text.setdefault(each.name, default)
-            elif each.name not in axes and each.default is not None:
+            elif each.name in axes or each.name in held:
+                continue
+            elif each.default is not None:
                 axes[each.name] = Axis(each.name, "fixed", float(each.default))
-            elif each.name not in axes and each.required:
+            elif each.required:
                 missing.append(each.name)
         if missing:
             raise ValueError(
                 f"problem {declared.name!r} needs a value or range for {', '.join(missing)} "
                 "(they have no default)"
             )
-        given = [n for n in self.axes if n in axes]
+        given = [n for n in self.axes if n in axes] + [n for n in held if n not in text]
         declared.columns(dict.fromkeys(given, 0.0))  # a vector given in part is refused
         order = {n: k for k, n in enumerate(declared.names)}
         return dict(sorted(axes.items(), key=lambda item: order[item[0]])), text
 
     @property
     def inputs(self) -> tuple[str, ...]:  # type: ignore[override]
-        """The numeric inputs with a value, in the declaration's order: the points' order."""
+        """The inputs that are axes (columns of the files), in the declaration's order: the
+        points' order."""
         return tuple(self.axes)
 
     @property
@@ -245,7 +388,12 @@ class ProblemSweep(Sweep):
 
     @property
     def _kinds(self) -> dict[str, str]:
-        return _fields(self.problem, self.tangential)
+        """Each field -> ``"float"``, ``"flag"`` or ``"text"``: the result's columns that
+        are not inputs, nor the body's own (:func:`problem_fields`)."""
+        kinds = _fields(self.problem, self.tangential)
+        if self.body is None:
+            return kinds
+        return {n: k for n, k in kinds.items() if n not in self.body.COLUMNS}
 
     @property
     def default_fields(self) -> tuple[str, ...]:
@@ -279,8 +427,8 @@ class ProblemSweep(Sweep):
         return self.problem.unit(name)
 
     def description(self) -> dict[str, Any]:
-        """The problem, the regimes' names, the axes, the fixed text inputs, the law, and the
-        samples and seed of random points."""
+        """The problem, the regimes' names, the body, the axes, the inputs held fixed, the
+        law, and the samples and seed of random points."""
         axes = {}
         for n, a in self.axes.items():
             ends = {"lo": a.lo, "hi": a.hi} | ({"num": a.num} if a.kind == "grid" else {})
@@ -289,8 +437,17 @@ class ProblemSweep(Sweep):
             "problem": self.problem.name,
             "summary": self.problem.summary,
             "regimes": list(self.regimes),
+        }
+        if self.body is not None:
+            out["body"] = self.body.to_dict()
+        # the body's inputs are in "body"; its preset input too, even where it is unused
+        body = set(self._from_body(self.problem)) | ({_PRESET} if self.body is not None else set())
+        held = {**self.text, **self._held}
+        out |= {
             "axes": axes,
-            "fixed": {k: v for k, v in self.text.items() if v},
+            "fixed": {
+                n: held[n] for n in self.problem.names if held.get(n, "") != "" and n not in body
+            },  # fmt: skip
         }
         if self.tangential is not None:
             out["tangential"] = self.tangential.to_dict()
@@ -305,11 +462,19 @@ class ProblemSweep(Sweep):
             elif each.name in values:
                 out[each.name] = np.broadcast_to(np.asarray(values[each.name], float), (n,))
             else:
-                out[each.name] = np.full(n, np.nan)
+                out[each.name] = np.full(n, self._held.get(each.name, np.nan))
         return out
 
-    def _solve(self, values: dict[str, Any], n: int) -> dict[str, Any]:
-        return self.problem.solver(self._columns(values, n), tangential=self.tangential).columns()
+    def _solve(self, values: dict[str, Any], n: int, fields: Any = None) -> dict[str, Any]:
+        """The result's columns at the points ``values``: from the problem's cheaper solver
+        (:attr:`Problem.partial <spinimpact.Problem>`) where ``fields`` are all among its
+        columns, else from its solver."""
+        solver = self.problem.solver
+        partial = self.problem.partial
+        if partial is not None and self.tangential is None and fields is not None:
+            if set(fields) <= set(partial[0]):
+                solver = partial[1]
+        return solver(self._columns(values, n), tangential=self.tangential).columns()
 
     def _check_corners(self) -> None:
         """Solve the sweep's corners (each varying input at its ends; the first
@@ -352,7 +517,7 @@ class ProblemSweep(Sweep):
         wanted = {name: self.field_name(name) for name in fields}
         if wanted:
             with np.errstate(all="ignore"):  # non-finite results are checked below, named
-                columns = self._solve(c, n)
+                columns = self._solve(c, n, wanted.values())
             columns["regime"] = (
                 self._codes(columns["regime"]) if "regime" in columns else np.zeros(n, np.int8)
             )
@@ -364,7 +529,11 @@ class ProblemSweep(Sweep):
         return {name: np.broadcast_to(value, (n,)) for name, value in out.items()}
 
     def _codes(self, regime: np.ndarray) -> np.ndarray:
-        """Regime names -> their indices into :attr:`regimes` (int8), in one pass."""
+        """Regime names -> their indices into :attr:`regimes` (int8), in one pass; indices
+        (a cheaper solver's) as they are."""
+        regime = np.asarray(regime)
+        if regime.dtype.kind in "iu":
+            return regime.astype(np.int8, copy=False)
         try:
             return regime_codes(regime, self.regimes)
         except ValueError as exc:

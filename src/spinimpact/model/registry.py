@@ -170,6 +170,18 @@ class Problem:
         The names the result's ``regime`` column takes under the rigid law (a tangential
         law's are :data:`~spinimpact.core.compliance.COMPLIANT_REGIMES`): a sweep counts
         the points in each and writes ``regime`` as indices into them.
+    check_ranges : callable, optional
+        ``check_ranges(ranges) -> str or None``: given each numeric input's ``(low, high)``
+        over a box of inputs (a sweep's), why some point of the box cannot be solved (a
+        contact point that does not approach the surface somewhere in it), else ``None``.
+        A sweep calls it before it computes, so that it refuses the whole box at once, in
+        the problem's own words.
+    partial : tuple, optional
+        ``(columns, solver)``: some of the result's columns and a cheaper solver, called as
+        :attr:`solver` is, whose result's ``columns()`` hold them alone (the impact process
+        without its works and energies), the very numbers of :attr:`solver` (``regime`` as
+        names or as indices into :attr:`regimes`). A sweep that asks for these columns
+        only, under the rigid law, calls it instead of :attr:`solver`.
     """
 
     name: str
@@ -185,6 +197,8 @@ class Problem:
     echoes: Mapping[str, str] = field(default_factory=dict)
     example: Mapping[str, Any] = field(default_factory=dict)
     regimes: tuple[str, ...] = ()
+    check_ranges: Callable[[Mapping[str, tuple[float, float]]], str | None] | None = None
+    partial: tuple[tuple[str, ...], Callable[..., Any]] | None = None
 
     def __post_init__(self) -> None:
         names = [i.name for i in self.inputs]
