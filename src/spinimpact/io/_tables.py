@@ -317,18 +317,11 @@ def chunk_numbers(
     numpy.ndarray
         The numbers (NaN where a cell is empty without default or unreadable).
     """
-    empty = chunk.empty[name]
-    cells = None if chunk.numbers is not None else chunk.columns[name]  # text read by Arrow
-    if cells is None:
-        values = _plain_numbers(chunk, name, cells, empty, note)
-    elif cells.dtype.kind in "iuf":
-        values = np.where(empty, np.nan, cells.astype(np.float64))
-    elif cells.dtype.kind == "b":
-        for i in np.flatnonzero(~empty):
-            note(i, f"{chunk.where(i, name)}: a true/false value is not a number")
-        values = np.full(cells.shape, np.nan)
+    if chunk.numbers is not None:  # text read by Arrow: its numbers first (a column of
+        values = _plain_numbers(chunk, name, None, None, note)  # numbers alone then has
+        empty = chunk.empty[name]  # its empty cells at no cost)
     else:
-        values = _plain_numbers(chunk, name, cells, empty, note)
+        values, empty = _typed_numbers(chunk, name, note)
     if default is not None:
         values[empty] = default
     elif required:
@@ -339,6 +332,21 @@ def chunk_numbers(
     for i in np.flatnonzero(check):
         note(i, f"{chunk.where(i, name)}: {found[i]}")
     return values
+
+
+def _typed_numbers(
+    chunk: Chunk, name: str, note: Callable[[int, str], None]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Column ``name`` of a chunk read by Python or from Parquet, as float64 (NaN where
+    empty), and its empty cells."""
+    empty, cells = chunk.empty[name], chunk.columns[name]
+    if cells.dtype.kind in "iuf":
+        return np.where(empty, np.nan, cells.astype(np.float64)), empty
+    if cells.dtype.kind == "b":
+        for i in np.flatnonzero(~empty):
+            note(i, f"{chunk.where(i, name)}: a true/false value is not a number")
+        return np.full(cells.shape, np.nan), empty
+    return _plain_numbers(chunk, name, cells, empty, note), empty
 
 
 #: A plain number: ASCII digits with an optional sign, point and exponent, or inf/nan
@@ -355,19 +363,20 @@ def _plain_numbers(
     chunk: Chunk,
     name: str,
     cells: np.ndarray | None,
-    empty: np.ndarray,
+    empty: np.ndarray | None,
     note: Callable[[int, str], None],
 ) -> np.ndarray:
     """Text cells as float64, NaN where empty; each cell that is not a plain number noted.
 
-    ``cells`` is ``None`` for text read by Arrow (``chunk.numbers``): only the cells it
-    did not read as numbers are then taken from ``chunk.columns``.
+    ``cells`` (and ``empty``) are ``None`` for text read by Arrow (``chunk.numbers``): only
+    the cells it did not read as numbers are then taken from ``chunk.columns``.
     """
-    values = np.full(empty.shape, np.nan)
-    given = np.flatnonzero(~empty)
     if cells is None and chunk.numbers is not None:
         values, given = chunk.numbers(name)
         cells = chunk.columns[name] if given.size else np.empty(0, dtype=object)
+    else:
+        assert cells is not None and empty is not None
+        values, given = np.full(empty.shape, np.nan), np.flatnonzero(~empty)
     text = [(c if isinstance(c, str) else str(c)).strip() for c in cells[given].tolist()]
     if all(map(_PLAIN.fullmatch, text)):
         values[given] = np.fromiter(map(float, text), np.float64, count=len(text))
