@@ -17,7 +17,7 @@ import importlib
 import importlib.util
 import math
 import numbers
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from types import ModuleType
 from typing import Any
 
@@ -36,6 +36,7 @@ __all__ = [
     "check",
     "validated",
     "row_problems",
+    "rule_problems",
     "RULES",
     "LARGEST",
     "SMALLEST",
@@ -208,18 +209,36 @@ def row_problems(name: str, values: np.ndarray) -> np.ndarray:
     The same checks as :func:`validated`, reported for every element instead of
     raising at the first, for batch processing that skips bad rows.
     """
+    return rule_problems(name, values, RULES[name])
+
+
+def rule_problems(
+    name: str, values: np.ndarray, rules: Sequence[tuple[Callable, str]] = ()
+) -> np.ndarray:
+    """Per-element message of what breaks ``rules`` ('' where nothing): a number must be
+    finite, at most :data:`LARGEST` in magnitude, then pass each ``(ok, rule)`` of
+    ``rules``; an element is named by the first it breaks.
+
+    Returns
+    -------
+    numpy.ndarray
+        A cheap array of ``''`` (fixed-width) where every element passes, else an object
+        array of messages such as ``"mass must be > 0, got -1.0"``.
+    """
     values = np.asarray(values, dtype=np.float64)
-    out = np.full(values.shape, "", dtype=object)
+    every = [(np.isfinite, "finite"),
+             (lambda a: np.abs(a) <= LARGEST, f"at most {LARGEST:g} in magnitude"),
+             *rules]  # fmt: skip
     with np.errstate(invalid="ignore"):
-        rules = [
-            (np.isfinite, "finite"),
-            (lambda a: np.abs(a) <= LARGEST, f"at most {LARGEST:g} in magnitude"),
-            *RULES[name],
-        ]
-        for ok, rule in rules:
-            bad = ~np.asarray(ok(values), dtype=bool) & (out == "")
-            for i in np.flatnonzero(bad):
-                out[i] = f"{name} must be {rule}, got {float(values[i])!r}"
+        bad = [(~np.asarray(ok(values), dtype=bool), rule) for ok, rule in every]
+    if not any(mask.any() for mask, _ in bad):  # the common case: no message to make
+        return np.zeros(values.shape, dtype="U1")
+    out = np.full(values.shape, "", dtype=object)
+    named = np.zeros(values.shape, dtype=bool)
+    for mask, rule in bad:
+        for i in np.flatnonzero(mask & ~named):
+            out[i] = f"{name} must be {rule}, got {float(values[i])!r}"
+        named |= mask
     return out
 
 

@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validation import LARGEST, SMALLEST, row_problems, validated
+from .._validation import SMALLEST, row_problems, rule_problems, validated
 from ..model.planar import LAWS, PendulumImpact, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
 from ._tables import BatchError, Chunk, check_header, chunk_numbers
@@ -121,17 +121,7 @@ def body_kind(header: list[str]) -> str:
 
 def _problems(name: str, rules: tuple[tuple[Callable, str], ...] = ()) -> Callable:
     """``values -> messages``: finite, at most ``LARGEST``, and ``rules``, for column ``name``."""
-
-    def problems(values: np.ndarray) -> np.ndarray:
-        out = np.full(values.shape, "", dtype=object)
-        magnitude = (lambda a: np.abs(a) <= LARGEST, f"at most {LARGEST:g} in magnitude")
-        with np.errstate(invalid="ignore"):
-            for ok, rule in ((np.isfinite, "finite"), magnitude, *rules):
-                for i in np.flatnonzero(~ok(values) & (out == "")):
-                    out[i] = f"{name} must be {rule}, got {float(values[i])!r}"
-        return out
-
-    return problems
+    return functools.partial(rule_problems, name, rules=rules)
 
 
 _POSITIVE = ((lambda a: a > 0, "> 0"), (lambda a: a >= SMALLEST, f">= {SMALLEST:g}"))

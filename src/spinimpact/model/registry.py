@@ -32,7 +32,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validation import LARGEST, RULES
+from .._validation import RULES, rule_problems
 from .units import unit_of
 
 __all__ = ["Input", "Problem", "register", "unregister", "problems", "problem", "detect"]
@@ -110,22 +110,16 @@ class Input:
         numpy.ndarray of str (object)
         """
         values = np.asarray(values)
-        if self.text:
-            bad = [(~np.isin(values, self.choices), f"one of {', '.join(self.choices or ())}")]
-        else:
-            values = values.astype(np.float64)
-            rules = [(np.isfinite, "finite"),
-                     (lambda a: np.abs(a) <= LARGEST, "at most 1e+50 in magnitude"),
-                     *RULES.get(self.rule or "", ())]  # fmt: skip
-            with np.errstate(invalid="ignore"):
-                bad = [(~np.asarray(ok(values), dtype=bool), rule) for ok, rule in rules]
-        if not any(b.any() for b, _ in bad):  # the common case: a cheap array of ''
+        if not self.text:
+            return rule_problems(self.name, values, RULES.get(self.rule or "", ()))
+        bad = ~np.isin(values, self.choices)
+        if not bad.any():  # the common case: a cheap array of ''
             return np.zeros(values.shape, dtype="U1")
         out = np.full(values.shape, "", dtype=object)
-        for mask, rule in bad:
-            for i in np.flatnonzero(mask & (out == "")):
-                got = repr(values[i]) if self.text else repr(float(values[i]))
-                out[i] = f"{self.name} must be {rule}, got {got}"
+        for i in np.flatnonzero(bad):
+            out[i] = (
+                f"{self.name} must be one of {', '.join(self.choices or ())}, got {values[i]!r}"
+            )
         return out
 
 
