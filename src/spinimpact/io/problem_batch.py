@@ -206,8 +206,9 @@ class ProblemBatch:
                 values[each.name] = chunk_numbers(
                     chunk, each.name, default, note, each.problems, required=not each.optional
                 )
-            else:
-                values[each.name] = np.full(n, np.nan if default is None else float(default))
+            else:  # one value for every row: a read-only view, no array of copies
+                value = np.float64(np.nan if default is None else float(default))
+                values[each.name] = np.broadcast_to(value, (n,))
         self._presets(chunk, values, note)
         messages = chunk.messages.copy()
         for i, message in sorted(found, key=lambda item: item[0]):
@@ -252,7 +253,10 @@ class ProblemBatch:
 
     def _names(self, chunk: Chunk, each: Any, default: Any, note: Callable) -> np.ndarray:
         n = chunk.messages.size
-        names = np.full(n, "" if default is None else default, dtype=object)
+        one = np.array("" if default is None else default, dtype=object)
+        if each.name not in chunk.columns:  # one name for every row: a read-only view
+            return np.broadcast_to(one, (n,))
+        names = np.full(n, one[()], dtype=object)
         if each.name in chunk.columns:
             cells = _text(chunk.columns[each.name])
             given = ~chunk.empty[each.name] & (cells != "")
