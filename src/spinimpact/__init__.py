@@ -15,6 +15,7 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 """
 
 from . import _limits  # noqa: F401  (first: bounds the thread pools under ulimit -v)
+from .model import flight_problem as _flight_problem  # noqa: F401  (and the ball's flight)
 from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
 from .model.body import Body
 from .model.compliance import (

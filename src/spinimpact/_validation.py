@@ -180,6 +180,10 @@ RULES: dict[str, list[tuple[Callable[[np.ndarray], np.ndarray], str]]] = {
         (lambda a: a > 0, "> 0"),
         (lambda a: a >= SMALLEST / math.sqrt(MAX_ZETA), f">= {SMALLEST / math.sqrt(MAX_ZETA):g}"),
     ],
+    # a ball's launch (spinimpact.flight): speed in m/s, elevation in degrees, height in m
+    "speed": [(lambda s: s >= 0, ">= 0")],
+    "elevation_deg": [(lambda a: np.abs(a) <= 90, "in [-90, 90]")],
+    "launch_height": [(lambda h: h > 0, "> 0")],
 }
 
 

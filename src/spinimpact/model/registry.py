@@ -1,7 +1,8 @@
 """The registry of impact problems: each problem declared once, every consumer derived from it.
 
 An impact problem (the paper's bodies on a plane, a free planar body, a pendulum, a sphere
-in 3D, two spheres, or one of your own) is a :class:`Problem`: its inputs (:class:`Input`:
+in 3D, two spheres, a ball's flight with its bounces, or one of your own) is a
+:class:`Problem`: its inputs (:class:`Input`:
 name, SI unit, default, validation rule, the vector it is a component of, the presets
 that may fill it), its solver (named input columns in, a result object out, vectorized
 over rows) and its result type, whose columns carry their units
@@ -14,7 +15,7 @@ Examples
 --------
 >>> from spinimpact import problems, problem
 >>> [p.name for p in problems()]
-['paper', 'planar', 'pendulum', 'sphere', 'pair']
+['paper', 'planar', 'pendulum', 'sphere', 'pair', 'flight']
 >>> sphere = problem("sphere")
 >>> sphere.input("wx").unit, sphere.input("wx").vector
 ('rad/s', 'spin')
