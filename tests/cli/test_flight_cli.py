@@ -74,7 +74,10 @@ def test_many_balls_print_the_spread(cli):
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (("--speed", "-1"), "speed must be >= 0"),
+        (("--speed", "-1"), "--speed must be >= 0, got -1.0"),
+        (("--elevation-deg", "95"), "--elevation-deg must be in [-90, 90], got 95.0"),
+        (("--heading-deg", "inf"), "--heading-deg must be finite, got inf"),
+        (("--launch-height", "-2"), "--launch-height must be > 0, got -2.0"),
         (("--spin-rpm", "100", "--spin-axis", "0,0,0"), "length of spin_axis"),
         (("--spin-axis", "wobble"), "--spin-axis must be"),
         (("--launch-height", "0.01"), "start on or above the ground"),

@@ -85,8 +85,28 @@ def _targets(o: dict) -> None:
             raise click.UsageError(f"--{option}: no such directory {str(Path(path).parent)!r}")
 
 
+#: The launch options checked by the declarations of problem ``flight`` (their inputs).
+_DECLARED = {"speed": "speed", "elevation_deg": "elevation_deg", "heading_deg": "heading_deg",
+             "launch_height": "launch_height"}  # fmt: skip
+
+
+def _check_launch(o: dict) -> None:
+    """Each launch option by the rules its input of problem ``flight`` declares
+    (``spinimpact problems flight``), the error naming the option."""
+    from .._validation import RULES, rule_problems
+    from ..model.registry import problem
+
+    declared = problem("flight")
+    for option, name in _DECLARED.items():
+        rules = RULES.get(declared.input(name).rule or "", ())
+        found = rule_problems(f"--{option.replace('_', '-')}", np.asarray([o[option]]), rules)
+        if found[0]:
+            raise click.UsageError(str(found[0]))
+
+
 def _inputs(o: dict) -> dict[str, Any]:
     """The launch as :func:`~spinimpact.flight` takes it; scattered with ``--samples``."""
+    _check_launch(o)
     speed = o["speed"] * UNITS[o["speed_unit"]]
     spin = _spin(o)
     given = {"speed": speed, "angle": o["elevation_deg"], "direction": o["heading_deg"],
