@@ -14,6 +14,8 @@ Layers: :mod:`spinimpact.core` (pure vectorized kernels) <- the model
 (:class:`Body`, :func:`solve`, :class:`Impact`) <- :mod:`spinimpact.cli`.
 """
 
+from importlib import metadata as _metadata
+
 from . import _limits  # noqa: F401  (first: bounds the thread pools under ulimit -v)
 from .model import flight_problem as _flight_problem  # noqa: F401  (and the ball's flight)
 from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
@@ -48,7 +50,10 @@ from .model.registry import Input, Problem, detect, problem, problems, register,
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
-__version__ = "0.1.0"
+try:  # one source of the version: the package's metadata, from pyproject.toml
+    __version__ = _metadata.version("spinimpact")
+except _metadata.PackageNotFoundError:  # pragma: no cover - run from a source tree uninstalled
+    __version__ = "0+unknown"
 
 __all__ = [
     "Input",
