@@ -11,7 +11,7 @@ BASE   := $(VENV)/.installed-base
 IMAGES     ?= build/images
 VALIDATION ?= build/validation
 
-.PHONY: help demo test check bench lint images validation clean
+.PHONY: help demo test check bench lint images validation docs clean
 
 help:  ## list these commands
 	@awk -F':.*## ' '/^[a-z]+:.*## / {printf "  make %-11s %s\n", $$1, $$2}' $(firstword $(MAKEFILE_LIST))
@@ -29,6 +29,14 @@ $(BASE): pyproject.toml | $(PY)
 $(STAMP): pyproject.toml | $(PY)
 	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax]'
 	touch $(STAMP)
+
+DOCS_STAMP := $(VENV)/.installed-docs
+$(DOCS_STAMP): pyproject.toml | $(STAMP)
+	$(PY) -m pip install --quiet -e '.[docs]'
+	touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)  ## build the documentation site into build/docs/html (warnings are errors)
+	$(VENV)/bin/sphinx-build -W --keep-going -q -b html docs build/docs/html
 
 demo: $(BASE)  ## solve the documented default impact and print the report
 	$(VENV)/bin/spinimpact solve
