@@ -12,7 +12,7 @@ import pytest
 
 from spinimpact import Pendulum, PlanarBody, solve_pendulum, solve_planar
 from spinimpact.cli import main
-from spinimpact.io.planar_sweep import PlanarSweep
+from spinimpact.io.problem_sweep import ProblemSweep
 from spinimpact.io.sweep import parse_axis, run_sweep
 
 ROD = ["mass", "inertia", "rx", "ry", "vx", "vy", "omega", "law"]
@@ -126,7 +126,7 @@ def test_sweep_of_a_rod_prints_the_planar_regimes(run_main, tmp_path):
     rod = PlanarBody.rod(mass=1.0, length=1.0, angle=math.radians(45))
     texts = dict(zip(args[::2], args[1::2], strict=True))
     axes = {n[2:]: parse_axis(n[2:], v) for n, v in texts.items()}
-    sweep = PlanarSweep(rod, axes, law="newton")
+    sweep = ProblemSweep(problem="planar", body=rod, axes=axes, fixed={"law": "newton"})
     want = run_sweep(sweep, histogram=("dissipated_fraction", 0, 1, 4))
     for name, share in want.regime_fractions.items():
         assert f"  {name:20s} {share:.6f}" in out.splitlines()

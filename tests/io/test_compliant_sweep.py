@@ -1,4 +1,5 @@
-"""CompliantSweep: chunk by chunk, the very numbers of solve(..., tangential=law)."""
+"""CompliantSweep (an alias of ProblemSweep): chunk by chunk, the very numbers of
+solve(..., tangential=law)."""
 
 from __future__ import annotations
 
@@ -8,6 +9,10 @@ import pytest
 from spinimpact import Body, Stronge, Walton, solve
 from spinimpact.io.compliant_sweep import CompliantSweep, compliant_fields
 from spinimpact.io.sweep import parse_axis, run_sweep
+
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(CompliantSweep|compliant_fields) is deprecated:DeprecationWarning"
+)
 
 BALL = Body.solid_sphere(mass=0.057, radius=0.033)
 

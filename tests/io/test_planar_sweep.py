@@ -1,5 +1,6 @@
-"""Sweeps of a planar body or a pendulum: every field is solve_planar's (solve_pendulum's)
-column of its name, the regimes are counted, the outputs say what they hold."""
+"""Sweeps of a planar body or a pendulum through the older PlanarSweep (an alias of
+ProblemSweep): every field is solve_planar's (solve_pendulum's) column of its name, the
+regimes are counted, the outputs say what they hold."""
 
 import json
 import math
@@ -12,6 +13,10 @@ from spinimpact.core.planar import LAWS, PLANAR_REGIMES
 from spinimpact.io.planar_sweep import PROCESS_FIELDS, PlanarSweep, planar_fields
 from spinimpact.io.sweep import parse_axis, run_sweep
 from spinimpact.model.planar import PendulumImpact, PlanarImpact
+
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(PlanarSweep|planar_fields) is deprecated:DeprecationWarning"
+)
 
 ROD = PlanarBody.rod(mass=1.5, length=0.8, angle=math.radians(40))
 BLOCK = PlanarBody.block(mass=2.0, width=0.3, height=0.1, angle=0.3)
@@ -101,7 +106,8 @@ def test_outputs_hold_the_fields_with_their_types_and_metadata(tmp_path):
     run_sweep(sweep, output=tmp_path / "d", fields=fields)
     table = pq.read_table(tmp_path / "s.parquet")
     meta = table.schema.metadata
-    assert json.loads(meta[b"regimes"]) == list(PLANAR_REGIMES) and meta[b"law"] == b"energetic"
+    assert json.loads(meta[b"regimes"]) == list(PLANAR_REGIMES)
+    assert json.loads(meta[b"fixed"]) == {"law": "energetic"}
     assert json.loads(meta[b"body"])["name"] == "rod"
     assert table.schema.field("after_vx").metadata == {b"unit": b"m/s"}
     got = every_point(sweep, fields)
@@ -114,7 +120,8 @@ def test_outputs_hold_the_fields_with_their_types_and_metadata(tmp_path):
         == "dictionary<values=string, indices=int8, ordered=0>"
     )
     described = json.loads((tmp_path / "d" / "metadata.json").read_text())
-    assert described["regimes"] == list(PLANAR_REGIMES) and described["law"] == "energetic"
+    assert described["regimes"] == list(PLANAR_REGIMES)
+    assert described["fixed"] == {"law": "energetic"} and described["body"] == ROD.to_dict()
     assert np.load(tmp_path / "d" / "creates_energy.npy").dtype == bool
     assert np.load(tmp_path / "d" / "regime.npy").dtype == np.int8
     energy = solve_planar(ROD, got["vx"], got["vy"], got["omega"], mu=got["mu"],
@@ -130,7 +137,7 @@ def test_outputs_hold_the_fields_with_their_types_and_metadata(tmp_path):
         (PENDULUM, dict(omega="-1:1:3", mu="0.3", kappa="0.5"), {}, ValueError,
          "normal velocity omega\\*px reaches"),
         (PENDULUM, dict(vx="1", omega="-1", mu="0.3", kappa="0.5"), {}, ValueError,
-         "pendulum's sweep has no vx axis"),
+         "problem 'pendulum' has no input 'vx'"),
         (ROD, dict(GRID, mu="-1:1:3"), {}, ValueError, "mu must be >= 0"),
         (ROD, dict(GRID, vy="nan"), {}, ValueError, "vy must be finite"),
         (ROD, GRID, {"law": "hooke"}, ValueError, "law must be one of"),
@@ -161,7 +168,7 @@ def test_axes_are_taken_only_under_their_own_names():
     built_as_vx = axes(GRID) | {"vy": Axis("vx", "fixed", 4.0)}
     with pytest.raises(ValueError, match=r"axes\['vy'\] is an axis of vx"):
         PlanarSweep(ROD, built_as_vx)
-    with pytest.raises(ValueError, match="no axis 'spin'"):
+    with pytest.raises(ValueError, match="problem 'planar' has no input 'spin'"):
         PlanarSweep(ROD, axes(GRID) | {"spin": Axis("omega", "fixed", 1.0)})
     with pytest.raises(TypeError, match="samples must be a positive integer"):
         PlanarSweep(ROD, axes(GRID), samples=True)

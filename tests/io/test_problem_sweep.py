@@ -7,8 +7,7 @@ import pytest
 
 from spinimpact import Body, solve_pair
 from spinimpact.io.problem_sweep import ProblemSweep, problem_fields
-from spinimpact.io.sphere_sweep import SphereSweep, sphere_fields
-from spinimpact.io.sweep import Axis, parse_axis, run_sweep
+from spinimpact.io.sweep import Axis, run_sweep
 from spinimpact.model.registry import Input, Problem, register, unregister
 from spinimpact.model.result import Result
 
@@ -50,22 +49,27 @@ def test_a_pair_sweep_equals_solve_pair_bit_for_bit():
 
 
 @pytest.mark.slow
-def test_a_sphere_sweep_gives_the_sphere_sweeps_numbers():
+def test_a_body_given_whole_or_by_its_inputs_gives_the_same_numbers():
+    """The body's inputs as axes (the command line's --problem) or a Body held fixed: the
+    same points, the same fields; only the columns and the description differ."""
     spec = dict(vx="uniform:-5:5", vy="uniform:-4:-0.5", vz="uniform:-1:1", wx="uniform:-30:30",
                 wy="0", wz="uniform:-50:50", mu="uniform:0:1", kappa="0.8")  # fmt: skip
     ball = Body.preset("spherical-shell", mass=0.057, radius=0.033)
-    old = SphereSweep(ball, {n: parse_axis(n, v) for n, v in spec.items()}, samples=3000,
-                      seed=3, chunk_size=1000)  # fmt: skip
-    new = ProblemSweep(problem="sphere", axes={**spec, "mass": 0.057, "radius": 0.033},
-                       text={"body": "spherical-shell"}, samples=3000, seed=3,
-                       chunk_size=700)  # fmt: skip
-    assert new.regimes == old.regimes
-    fields = sphere_fields()
-    a = {n: np.concatenate([old.evaluate(k, fields)[n] for k in range(old.chunks)]) for n in fields}
-    b = {n: np.concatenate([new.evaluate(k, fields)[n] for k in range(new.chunks)]) for n in fields}
+    held = ProblemSweep(problem="sphere", body=ball, axes=spec, samples=3000, seed=3,
+                        chunk_size=1000)  # fmt: skip
+    given = ProblemSweep(problem="sphere", axes={**spec, "mass": 0.057, "radius": 0.033},
+                         text={"body": "spherical-shell"}, samples=3000, seed=3,
+                         chunk_size=700)  # fmt: skip
+    assert given.regimes == held.regimes
+    assert set(given.inputs) - set(held.inputs) == {"mass", "radius"}  # in "body" instead
+    fields = problem_fields("sphere", body=ball)
+    a = {n: np.concatenate([held.evaluate(k, fields)[n] for k in range(held.chunks)])
+         for n in fields}  # fmt: skip
+    b = {n: np.concatenate([given.evaluate(k, fields)[n] for k in range(given.chunks)])
+         for n in fields}  # fmt: skip
     for name in fields:
         np.testing.assert_array_equal(a[name], b[name], err_msg=name)
-    np.testing.assert_array_equal(run_sweep(old).regime_counts, run_sweep(new).regime_counts)
+    np.testing.assert_array_equal(run_sweep(held).regime_counts, run_sweep(given).regime_counts)
 
 
 def test_random_points_depend_on_the_seed_alone():
@@ -154,7 +158,7 @@ def test_bad_sweeps_are_named(kwargs, error, message):
 def test_bad_fields_list_the_valid_ones():
     sweep = ProblemSweep(problem="pair", axes={**PAIR, "vx": 1.0})
     with pytest.raises(
-        ValueError, match="fields must be among regime, .*after1_vx.* for problem 'pair'"
+        ValueError, match="fields must be among ball1_mass, .*after1_vx.*; got 'after_omega'"
     ):
         run_sweep(sweep, fields=("after_omega",))
 

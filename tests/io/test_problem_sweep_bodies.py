@@ -1,21 +1,35 @@
-"""ProblemSweep with a body and inputs held fixed runs every sweep of the per-problem sweeps
-(a sphere on a surface, a planar body or a pendulum under a restitution law, one of the
-paper's bodies under a tangential law), with their numbers to the last bit."""
+"""ProblemSweep with a body and inputs held fixed: a sphere on a surface, a planar body or a
+pendulum under a restitution law, one of the paper's bodies under a tangential law. Every
+field is the solver's column of its name, as the solver gives it for one body (and one
+surface) over the chunk's points, to the last bit; the files hold the axes alone and
+describe the rest."""
 
+import json
 import math
+import re
 
 import numpy as np
 import pytest
 
-from spinimpact import Body, MindlinDeresiewicz, Pendulum, PlanarBody, Stronge, Walton
-from spinimpact.io.compliant_sweep import CompliantSweep
-from spinimpact.io.planar_sweep import PROCESS_FIELDS, PlanarSweep
+from spinimpact import (
+    Body,
+    MindlinDeresiewicz,
+    Pendulum,
+    PlanarBody,
+    Stronge,
+    Walton,
+    solve,
+    solve_pendulum,
+    solve_planar,
+    solve_sphere,
+)
+from spinimpact.core import REGIMES
+from spinimpact.core.compliance import COMPLIANT_REGIMES
+from spinimpact.core.planar import PLANAR_REGIMES
 from spinimpact.io.problem_sweep import ProblemSweep, problem_fields
-from spinimpact.io.sphere_sweep import SphereSweep
-from spinimpact.io.sweep import parse_axis
+from spinimpact.io.sweep import run_sweep
+from spinimpact.model.problems import PROCESS_COLUMNS
 from spinimpact.model.sphere3d import Surface
-
-pytestmark = pytest.mark.slow  # about 10 s in all, the law of micro-slip most of it
 
 TILT = (0.2, 1.0, -0.1)
 BELT = (1.0, -0.5, 0.3)
@@ -33,26 +47,32 @@ PAPER_RANDOM = dict(vx="uniform:-6:6", vy="uniform:-5:-0.5", omega="uniform:-200
 PAPER_GRID = dict(vx="-5:5:11", vy="-4:-0.5:3", omega="-50:50:11", mu="0:1:3", kappa="0.1:1:2")
 
 
-def axes(spec):
-    return {n: parse_axis(n, v) for n, v in spec.items()}
+def every_point(sweep, fields, reference=None):
+    """Every point's inputs and fields; with ``reference(chunk) -> columns``, the same
+    fields from the reference, chunk by chunk (regimes as indices into the sweep's)."""
+    parts, want = [], []
+    for k in range(sweep.chunks):
+        got = sweep.evaluate(k, fields)
+        parts.append(got)
+        if reference is not None:
+            n = sweep.chunk_length(k)
+            columns = reference(sweep.chunk(k))
+            want.append({f: np.broadcast_to(codes(sweep, columns[f]) if f == "regime"
+                                             else columns[f], (n,)) for f in fields})  # fmt: skip
+    join = lambda ps: {n: np.concatenate([p[n] for p in ps]) for n in ps[0]}  # noqa: E731
+    return join(parts), (join(want) if want else None)
 
 
-def every_point(sweep, fields):
-    parts = [sweep.evaluate(k, fields) for k in range(sweep.chunks)]
-    return {name: np.concatenate([p[name] for p in parts]) for name in parts[0]}
+def codes(sweep, names):
+    return np.asarray([sweep.regimes.index(str(r)) for r in np.asarray(names).ravel()], np.int8)
 
 
-def assert_same_sweep(old, new, fields):
-    """The same points, columns, dtypes, units, regimes and numbers (NaN where NaN)."""
-    assert new.inputs == tuple(old.inputs) and new.regimes == tuple(old.regimes)
-    a, b = every_point(old, fields), every_point(new, fields)
-    assert list(a) == list(b)
-    for name in a:
-        assert a[name].dtype == b[name].dtype, name
-        np.testing.assert_array_equal(a[name], b[name], err_msg=name)
-    for name in (*new.inputs, *fields):
-        assert new.column_dtype(name) == old.column_dtype(name), name
-        assert new.unit(name) == old.unit(name), name
+def assert_fields_equal(sweep, fields, reference):
+    got, want = every_point(sweep, fields, reference)
+    for name in fields:
+        np.testing.assert_array_equal(got[name], want[name], err_msg=name)  # NaN where NaN
+        assert got[name].dtype == (np.int8 if name == "regime" else want[name].dtype), name
+    return got
 
 
 def surface_inputs(normal, velocity):
@@ -60,6 +80,11 @@ def surface_inputs(normal, velocity):
     return normal | {f"surface_velocity_{k}": x for k, x in zip("xyz", velocity, strict=True)}
 
 
+def stacked(c, *names):
+    return np.stack(np.broadcast_arrays(*(c[n] for n in names)), axis=-1)
+
+
+@pytest.mark.slow  # a few seconds, all cases together
 @pytest.mark.parametrize("tilted", [False, True], ids=["flat", "tilted"])
 @pytest.mark.parametrize(
     "body",
@@ -71,31 +96,23 @@ def surface_inputs(normal, velocity):
                          ids=["random", "grid"])  # fmt: skip
 def test_a_sphere_on_a_surface(body, tilted, spec, samples):
     normal, velocity = (TILT, BELT) if tilted else ((0.0, 1.0, 0.0), (0.0, 0.0, 0.0))
-    old = SphereSweep(body, axes(spec), samples=samples, chunk_size=701,
-                      surface=Surface(normal=normal, velocity=velocity))  # fmt: skip
-    new = ProblemSweep(problem="sphere", body=body, axes=spec, samples=samples, chunk_size=701,
-                       fixed=surface_inputs(normal, velocity))  # fmt: skip
+    sweep = ProblemSweep(problem="sphere", body=body, axes=spec, samples=samples,
+                         chunk_size=701, fixed=surface_inputs(normal, velocity))  # fmt: skip
+    assert sweep.inputs == ("vx", "vy", "vz", "wx", "wy", "wz", "mu", "kappa")
+    assert sweep.regimes == REGIMES
+    plane = Surface(normal=normal, velocity=velocity)  # the numbers as typed, normalised once
+
+    def reference(c):
+        return solve_sphere(body, stacked(c, "vx", "vy", "vz"), stacked(c, "wx", "wy", "wz"),
+                            mu=c["mu"], kappa=c["kappa"], surface=plane).columns()  # fmt: skip
+
     fields = problem_fields("sphere", body=Body)
-    assert set(fields) == set(old_fields(old))
-    assert_same_sweep(old, new, fields)
+    assert "zeta" not in fields and {"grips", "topspin", "after_wz"} <= set(fields)
+    got = assert_fields_equal(sweep, fields, reference)
+    assert got["grips"].dtype == bool
 
 
-def old_fields(sweep):
-    """The fields an older sweep accepts, found by asking it for each result column."""
-    names = set()
-    for problem in ("paper", "planar", "pendulum", "sphere"):
-        names |= set(problem_fields(problem))
-    names |= set(problem_fields("paper", Walton(0.1)))
-    accepted = set()
-    for name in names:
-        try:
-            sweep.field_name(name)
-        except ValueError:
-            continue
-        accepted.add(name)
-    return accepted
-
-
+@pytest.mark.slow  # a few seconds, all cases together
 @pytest.mark.parametrize("law", ["poisson", "newton", "energetic"])
 @pytest.mark.parametrize(
     "body",
@@ -107,29 +124,42 @@ def old_fields(sweep):
 @pytest.mark.parametrize(("spec", "samples"), [(PLANAR_RANDOM, 1000), (PLANAR_GRID, None)],
                          ids=["random", "grid"])  # fmt: skip
 def test_a_planar_body_under_a_law(body, law, spec, samples):
-    old = PlanarSweep(body, axes(spec), samples=samples, chunk_size=601, law=law)
-    new = ProblemSweep(problem="planar", body=body, axes=spec, fixed={"law": law},
-                       samples=samples, chunk_size=601)  # fmt: skip
+    sweep = ProblemSweep(problem="planar", body=body, axes=spec, fixed={"law": law},
+                         samples=samples, chunk_size=601)  # fmt: skip
+    assert sweep.inputs == ("vx", "vy", "omega", "mu", "kappa")
+    assert sweep.regimes == PLANAR_REGIMES
+
+    def reference(c):
+        return solve_planar(body, c["vx"], c["vy"], c["omega"], mu=c["mu"], kappa=c["kappa"],
+                            law=law).columns()  # fmt: skip
+
     fields = problem_fields("planar", body=PlanarBody)
-    assert set(fields) == old_fields(old)
-    assert_same_sweep(old, new, fields)
-    process = tuple(f for f in PROCESS_FIELDS if f in fields)  # the process alone
-    assert_same_sweep(old, new, process)
+    got = assert_fields_equal(sweep, fields, reference)
+    assert got["creates_energy"].dtype == bool
+    # the process alone, by the declaration's cheaper solver: the same numbers
+    assert_fields_equal(sweep, tuple(f for f in PROCESS_COLUMNS if f in fields), reference)
+    assert_fields_equal(sweep, ("after_omega", "regime"), reference)
 
 
 @pytest.mark.parametrize("law", ["poisson", "newton", "energetic"])
 def test_a_pendulum_under_a_law(law):
     pendulum = Pendulum.rod(mass=1.0, length=1.0, angle=math.radians(60))
     spec = dict(omega="-6:-0.1:11", mu="0:1:5", kappa="0:1:4")
-    old = PlanarSweep(pendulum, axes(spec), chunk_size=100, law=law)
-    new = ProblemSweep(problem="pendulum", body=pendulum, axes=spec, fixed={"law": law},
-                       chunk_size=100)  # fmt: skip
+    sweep = ProblemSweep(problem="pendulum", body=pendulum, axes=spec, fixed={"law": law},
+                         chunk_size=100)  # fmt: skip
+    assert sweep.inputs == ("omega", "mu", "kappa")
+
+    def reference(c):
+        return solve_pendulum(pendulum, c["omega"], mu=c["mu"], kappa=c["kappa"],
+                              law=law).columns()  # fmt: skip
+
     fields = problem_fields("pendulum", body=Pendulum)
-    assert set(fields) == old_fields(old)
-    assert_same_sweep(old, new, fields)
-    assert_same_sweep(old, new, tuple(f for f in PROCESS_FIELDS if f in fields))
+    assert {"before_vx", "before_vy"} <= set(fields)
+    assert_fields_equal(sweep, fields, reference)
+    assert_fields_equal(sweep, tuple(f for f in PROCESS_COLUMNS if f in fields), reference)
 
 
+@pytest.mark.slow  # a few seconds, all cases together
 @pytest.mark.parametrize(
     "law",
     [Walton(0.3), Walton(-0.5), Stronge(poisson_ratio=0.3), Stronge(stiffness_ratio=0.8),
@@ -148,9 +178,102 @@ def test_one_of_the_papers_bodies_under_a_tangential_law(body, law, spec, sample
     if isinstance(law, MindlinDeresiewicz):  # integrated in time: a few points are enough
         spec = {**spec, "vx": "-5:5:3", "omega": "-50:50:3"} if samples is None else spec
         samples = samples and 20
-    old = CompliantSweep(body, axes(spec), samples=samples, chunk_size=300, tangential=law)
-    new = ProblemSweep(problem="paper", body=body, axes=spec, samples=samples, chunk_size=300,
-                       tangential=law)  # fmt: skip
+    sweep = ProblemSweep(problem="paper", body=body, axes=spec, samples=samples,
+                         chunk_size=300, tangential=law)  # fmt: skip
+    assert sweep.inputs == ("vx", "vy", "omega", "mu", "kappa")
+    assert sweep.regimes == COMPLIANT_REGIMES
+
+    def reference(c):
+        return solve(body, c["vx"], c["vy"], c["omega"], mu=c["mu"], kappa=c["kappa"],
+                     tangential=law).columns()  # fmt: skip
+
     fields = problem_fields("paper", law, body=Body)
-    assert set(fields) == old_fields(old)
-    assert_same_sweep(old, new, fields)
+    assert "tangential_restitution" in fields and "zeta" not in fields
+    got = assert_fields_equal(sweep, fields, reference)
+    if samples is None:  # the grid holds points of zero slip, where beta = -u+/u- is 0/0
+        assert np.isnan(got["tangential_restitution"]).any()
+
+
+def test_the_files_hold_the_axes_and_describe_the_body_and_the_fixed_inputs(tmp_path):
+    pq = pytest.importorskip("pyarrow.parquet", reason="the [parquet] extra is not installed")
+    rod = PlanarBody.rod(mass=1.5, length=0.8, angle=math.radians(40))
+    sweep = ProblemSweep(problem="planar", body=rod, axes=PLANAR_GRID, fixed={"law": "newton"})
+    fields = ("after_vx", "regime", "creates_energy")
+    run_sweep(sweep, output=tmp_path / "s.parquet", fields=fields)
+    run_sweep(sweep, output=tmp_path / "d", fields=fields)
+    table = pq.read_table(tmp_path / "s.parquet")
+    assert table.column_names == ["vx", "vy", "omega", "mu", "kappa", *fields]
+    meta = {k.decode(): v.decode() for k, v in table.schema.metadata.items()}
+    described = json.loads((tmp_path / "d" / "metadata.json").read_text())
+    for got in ({k: json.loads(v) if k != "problem" and k != "summary" else v
+                 for k, v in meta.items()}, described):  # fmt: skip
+        assert got["problem"] == "planar" and got["regimes"] == list(PLANAR_REGIMES)
+        assert got["body"] == rod.to_dict() and got["body"]["name"] == "rod"
+        assert got["fixed"] == {"law": "newton"}
+        assert set(got["axes"]) == {"vx", "vy", "omega", "mu", "kappa"}
+    assert sorted(p.name for p in (tmp_path / "d").iterdir()) == sorted(
+        [*(f"{n}.npy" for n in (*sweep.inputs, *fields)), "metadata.json"]
+    )
+    ball = Body.spherical_shell(mass=0.057, radius=0.033)
+    sphere = ProblemSweep(problem="sphere", body=ball, axes=SPHERE_GRID,
+                          fixed=surface_inputs(TILT, BELT))  # fmt: skip
+    described = sphere.description()
+    assert described["body"] == ball.to_dict()
+    assert described["fixed"] == surface_inputs(TILT, BELT)  # the body's preset is in "body"
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "message"),
+    [
+        (dict(problem="planar", body=PlanarBody.rod(mass=[1.0, 2.0], length=1.0, angle=0.5)),
+         ValueError, "a sweep needs a single body, not an array of bodies"),
+        (dict(problem="planar", body="rod"), TypeError, "body must be a spinimpact.Body, Ball"),
+        (dict(problem="pendulum", body=PlanarBody(1.0, 0.1, 0.1, -0.1)), ValueError,
+         "problem 'pendulum' needs a value or range for gx, gy, px, py"),
+        (dict(problem="planar", body=PlanarBody(1.0, 0.1, 0.1, -0.1), axes={"mass": "1:2:3"}),
+         ValueError, "mass is given twice: as an axis and held fixed"),
+        (dict(problem="planar", body=PlanarBody(1.0, 0.1, 0.1, -0.1), fixed={"mass": 2.0}),
+         ValueError, "mass is given twice: 1.0 by the body and 2.0 in fixed"),
+        (dict(problem="planar", fixed={"law": "hooke"}), ValueError, "law must be one of"),
+        (dict(problem="planar", fixed={"law": 1}), TypeError, "law must be one of"),
+        (dict(problem="planar", fixed={"mass": "1:2:3"}), TypeError,
+         "fixed['mass'] must be a number"),
+        (dict(problem="planar", fixed={"mass": -1.0}), ValueError, "mass must be > 0"),
+        (dict(problem="planar", fixed={"spin": 1.0}), ValueError, "has no input 'spin'"),
+        (dict(problem="sphere", fixed={"normal_x": 1.0}, axes=SPHERE_GRID), ValueError,
+         "normal of problem 'sphere' is given in part"),
+        (dict(problem="planar", body=PlanarBody(1.0, 0.1, 0.1, -0.1),
+              axes=dict(PLANAR_GRID, omega="-50:50:3")), ValueError,
+         "must approach the surface at every point of the sweep, but its normal velocity vy + "
+         "omega*rx reaches 4.5 m/s at vy = -0.5, omega = 50 (rx = 0.1 m); narrow the range of "
+         "vy or omega"),
+        (dict(problem="pendulum", body=Pendulum.rod(mass=1.0, length=1.0, angle=0.5),
+              axes=dict(omega="-1:1:3")), ValueError, "normal velocity omega*px reaches"),
+        (dict(problem="sphere", body=Body.solid_sphere(mass=1.0, radius=0.1),
+              axes=dict(SPHERE_GRID, vy="-1:1:3"), fixed=surface_inputs(TILT, BELT)),
+         ValueError, "its normal velocity (v - surface velocity) . normal reaches"),
+    ],
+)  # fmt: skip
+def test_bad_bodies_and_fixed_inputs_are_named(kwargs, error, message):
+    if kwargs["problem"] == "planar" and "axes" not in kwargs:
+        kwargs = {**kwargs, "axes": PLANAR_GRID}
+    kwargs.setdefault("axes", {})
+    with pytest.raises(error, match=re.escape(message)):
+        ProblemSweep(**kwargs)
+
+
+@pytest.mark.slow
+def test_a_sweep_with_a_body_runs_on_dask_with_the_same_numbers(tmp_path):
+    distributed = pytest.importorskip("distributed", reason="dask.distributed is not installed")
+    rod = PlanarBody.rod(mass=1.5, length=0.8, angle=math.radians(40))
+    sweep = ProblemSweep(problem="planar", body=rod, axes=PLANAR_RANDOM, fixed={"law": "newton"},
+                         samples=3000, chunk_size=500)  # fmt: skip
+    fields = ("after_vx", "regime", "dissipated_energy")
+    local = run_sweep(sweep, output=tmp_path / "local", fields=fields)
+    with distributed.Client(processes=False, n_workers=2, threads_per_worker=1,
+                            dashboard_address=":0") as client:  # fmt: skip
+        remote = run_sweep(sweep, output=tmp_path / "remote", fields=fields, client=client)
+    np.testing.assert_array_equal(local.regime_counts, remote.regime_counts)
+    for name in (*sweep.inputs, *fields):
+        a, b = (np.load(tmp_path / run / f"{name}.npy") for run in ("local", "remote"))
+        np.testing.assert_array_equal(a, b, err_msg=name)

@@ -154,8 +154,9 @@ def print_compliant_sphere(imp: CompliantSphereImpact) -> None:
 
 def sweep_class(o: dict[str, Any]) -> Callable:
     """What builds the sweep of the paper's bodies that the options ask for:
-    :class:`~spinimpact.io.sweep.Sweep`, or with a tangential law a
-    :class:`~spinimpact.io.compliant_sweep.CompliantSweep` of that law.
+    :class:`~spinimpact.io.sweep.Sweep`, or with a tangential law the
+    :class:`~spinimpact.io.problem_sweep.ProblemSweep` of problem ``paper`` under that law
+    (called as ``Sweep`` is: ``make(body, axes, samples=..., seed=..., chunk_size=...)``).
 
     Raises
     ------
@@ -164,7 +165,7 @@ def sweep_class(o: dict[str, Any]) -> Callable:
     """
     import functools
 
-    from ..io.compliant_sweep import CompliantSweep
+    from ..io.problem_sweep import ProblemSweep
     from ..io.sweep import Sweep
 
     law = tangential_law(o)
@@ -173,4 +174,4 @@ def sweep_class(o: dict[str, Any]) -> Callable:
     if o.get("planar") is not None or o.get("sphere") is not None:
         which = "--planar" if o.get("planar") is not None else "--sphere"
         raise click.UsageError(f"--tangential {law.name} does not apply to {which} sweeps")
-    return functools.partial(CompliantSweep, tangential=law)
+    return functools.partial(ProblemSweep, problem="paper", tangential=law)

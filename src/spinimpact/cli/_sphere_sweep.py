@@ -2,9 +2,10 @@
 
 ``--sphere solid-sphere|spherical-shell`` (``--mass``, ``--radius``; ``--gyration`` gives
 any sphere, a thick shell) on the surface of ``--normal`` and ``--surface-velocity``, over
-the axes ``--vx, --vy, --vz`` (m/s), ``--wx, --wy, --wz`` (rad/s), ``--mu, --kappa``
-(:class:`~spinimpact.io.sphere_sweep.SphereSweep`). The fields are the
-:class:`~spinimpact.SphereImpact` columns and the regimes the paper sweep's.
+the axes ``--vx, --vy, --vz`` (m/s), ``--wx, --wy, --wz`` (rad/s), ``--mu, --kappa``: the
+:class:`~spinimpact.io.problem_sweep.ProblemSweep` of problem ``sphere`` with the body and
+the surface held fixed. The fields are the :class:`~spinimpact.SphereImpact` columns and
+the regimes the paper sweep's.
 """
 
 from __future__ import annotations
@@ -58,18 +59,18 @@ sphere_options = _options(
 def sphere_sweep(
     ctx: click.Context, o: dict[str, Any], samples: int | None, seed: int, chunk_size: int
 ) -> tuple[Any, str | None]:
-    """The :class:`~spinimpact.io.sphere_sweep.SphereSweep` of the options, and the fields
-    to write when ``--fields`` was not typed (else ``None``).
+    """The :class:`~spinimpact.io.problem_sweep.ProblemSweep` of the options (problem
+    ``sphere``: the body and the surface held fixed), and the fields to write when
+    ``--fields`` was not typed (else ``None``).
 
     Raises
     ------
     click.UsageError
         For an option of the paper's or the planar bodies.
     """
-    from ..io.sphere_sweep import SphereSweep
+    from ..io.problem_sweep import ProblemSweep
     from ..io.sweep import parse_axis
     from ..model.body import Body
-    from ..model.sphere3d import Surface
 
     for name in _NOT_SPHERE:
         if _given(ctx, name):
@@ -84,17 +85,12 @@ def sphere_sweep(
     random = samples is not None or any(t.strip().startswith("uniform:") for t in typed)
     defaults = {"vx": "uniform:-5:5" if random else "-5:5:201"}
     texts = {n: o[n] if o[n] is not None else defaults.get(n, "0") for n in names}
-    surface = Surface(
-        normal=(0.0, 1.0, 0.0) if o["normal"] is None else o["normal"],
-        velocity=(0.0, 0.0, 0.0) if o["surface_velocity"] is None else o["surface_velocity"],
-    )
+    normal = (0.0, 1.0, 0.0) if o["normal"] is None else o["normal"]
+    velocity = (0.0, 0.0, 0.0) if o["surface_velocity"] is None else o["surface_velocity"]
+    fixed = {f"normal_{k}": float(x) for k, x in zip("xyz", normal, strict=True)}
+    fixed |= {f"surface_velocity_{k}": float(x) for k, x in zip("xyz", velocity, strict=True)}
     size = {"chunk_size": chunk_size} if _given(ctx, "chunk_size") else {}
-    sweep = SphereSweep(
-        body,
-        {name: parse_axis(name, text) for name, text in texts.items()},
-        samples=samples,
-        seed=seed,
-        surface=surface,
-        **size,
-    )
+    sweep = ProblemSweep(problem="sphere", body=body, fixed=fixed, samples=samples, seed=seed,
+                         axes={name: parse_axis(name, text) for name, text in texts.items()},
+                         **size)  # fmt: skip
     return sweep, None if _given(ctx, "fields") else _FIELDS

@@ -3,10 +3,13 @@
 For one of the paper's bodies (``--body``, ``--gyration``) by default; with ``--planar``
 for one planar body (``rod``, ``block``, ``eccentric-disk``: the geometry options of
 ``spinimpact planar``; ``custom``: ``--inertia, --rx, --ry``) or a rod ``pendulum`` on a
-pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``
-(:class:`~spinimpact.io.planar_sweep.PlanarSweep`). The fields are then the
+pivot (axes ``--omega, --mu, --kappa`` only), under one restitution ``--law``: the
+:class:`~spinimpact.io.problem_sweep.ProblemSweep` of problem ``planar`` or ``pendulum``
+with the body and the law held fixed. The fields are then the
 :class:`~spinimpact.PlanarImpact` columns and the regimes the planar ones. With
-``--sphere``, one sphere in 3D (:mod:`~spinimpact.cli._sphere_sweep`).
+``--sphere``, one sphere in 3D (:mod:`~spinimpact.cli._sphere_sweep`); with
+``--tangential``, one of the paper's bodies under that law (problem ``paper``); with
+``--problem NAME``, any registered problem (:mod:`~spinimpact.cli._problem_sweep`).
 
 Before computing, trial chunks (the sweep's first points, grown while they take at most
 a tenth of its time and 2 s) estimate the time, the memory of a chunk and the size of
@@ -341,7 +344,7 @@ def sweep_command(
     options: spinimpact sweep --problem pair --help lists them."""
     from ..io.sweep import estimate_sweep, parse_axis, run_sweep
 
-    make = sweep_class(o)  # Sweep, or a CompliantSweep of the --tangential law
+    make = sweep_class(o)  # Sweep, or the problem sweep of the --tangential law
     problem = o.get("problem")  # with --problem, the options are the problem's inputs
     if problem is None and o["sphere"] is None:
         for name in SPHERE_ONLY:
@@ -367,17 +370,19 @@ def sweep_command(
             chunk_size=chunk_size,
         )
     else:
-        from ..io.planar_sweep import PlanarSweep
+        from ..io.problem_sweep import ProblemSweep
+        from ..model.planar_body import Pendulum
 
         body = _planar_body(ctx, o)
         texts = _planar_axes(ctx, o, body, samples)
         size = {"chunk_size": chunk_size} if _given(ctx, "chunk_size") else {}
-        sweep = PlanarSweep(
-            body,
-            {name: parse_axis(name, text) for name, text in texts.items()},
+        sweep = ProblemSweep(
+            problem="pendulum" if isinstance(body, Pendulum) else "planar",
+            body=body,
+            axes={name: parse_axis(name, text) for name, text in texts.items()},
+            fixed={"law": o["law"]},
             samples=samples,
             seed=seed,
-            law=o["law"],
             **size,
         )
     hist = _histogram(histogram)

@@ -23,7 +23,7 @@ __all__ = [
 #: The inputs a sweep varies (SI units): vx, vy in m/s, omega in rad/s, mu and kappa.
 INPUTS = ("vx", "vy", "omega", "mu", "kappa")
 #: The names of the paper's, the planar and the sphere sweeps' axes: :data:`INPUTS`, then a
-#: sphere's ``vz`` (m/s) and spin ``wx, wy, wz`` (rad/s) (:mod:`~spinimpact.io.sphere_sweep`).
+#: sphere's ``vz`` (m/s) and spin ``wx, wy, wz`` (rad/s) (problem ``sphere``).
 #: A name's place here numbers its random stream, so new names go at the end. Any numeric
 #: input of a registered problem may be an axis too (:func:`axis_names`,
 #: :mod:`~spinimpact.io.problem_sweep`); its stream is numbered by its name.

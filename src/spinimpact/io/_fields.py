@@ -309,8 +309,9 @@ def write_npy_metadata(
     built under its temporary name).
 
     It holds ``description`` (the regimes' names, ``regime.npy`` holding indices into
-    them; the body; the law of a planar sweep) and, for each column, its file, dtype and
-    unit (``units(name)``, by default the package's vocabulary).
+    them; the body; the inputs a problem's sweep holds fixed, a restitution law among them)
+    and, for each column, its file, dtype and unit (``units(name)``, by default the
+    package's vocabulary).
     """
     units = units or unit_of
     columns = {

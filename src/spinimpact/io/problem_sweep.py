@@ -12,7 +12,12 @@ fractions and histograms on the fly, locally or on Dask.
 The files hold a column for each axis; inputs held at one value for the whole sweep
 (``fixed=``, and a body object's numbers, ``body=``) are written in the files'
 description instead (``"fixed"``, ``"body"``), with the problem, the regimes' names, the
-axes and the tangential law.
+axes and the tangential law. So it runs the sweeps of ``spinimpact sweep --sphere``,
+``--planar`` and ``--tangential`` (a sphere on a surface, a planar body or a pendulum under
+a restitution law, one of the paper's bodies under a tangential law), with the numbers and
+the columns of the per-problem sweeps it replaces (:mod:`~spinimpact.io.sphere_sweep`,
+:mod:`~spinimpact.io.planar_sweep`, :mod:`~spinimpact.io.compliant_sweep`: deprecated
+aliases).
 
 Each chunk is solved by the problem's own solver at once (:attr:`Problem.solver
 <spinimpact.Problem>`), so the fields are the result's columns that are not inputs
@@ -402,17 +407,22 @@ class ProblemSweep(Sweep):
         return (*after, "regime") if "regime" in self._kinds else after
 
     def field_name(self, name: str, role: str = "fields") -> str:
-        """The field ``name`` stands for: itself (:func:`problem_fields`) or an alias's field."""
-        if name in self._kinds or (name == "regime" and self.regimes == ("all",)):
+        """The field ``name`` stands for: itself (:func:`problem_fields`) or an alias's field.
+
+        Raises
+        ------
+        ValueError
+            For any other name, listing the fields in the result's order and the aliases.
+        """
+        kinds = self._kinds
+        if name in kinds or (name == "regime" and self.regimes == ("all",)):
             return name
-        if ALIASES.get(name) in self._kinds:
+        if ALIASES.get(name) in kinds:
             return ALIASES[name]
-        aliases = ", ".join(f"{a} for {f}" for a, f in ALIASES.items() if f in self._kinds)
+        fields = [n for n in result_kinds(self.problem, self.tangential) if n in kinds]
+        aliases = ", ".join(f"{a} for {f}" for a, f in ALIASES.items() if f in kinds)
         also = f" (or {aliases})" if aliases else ""
-        raise ValueError(
-            f"{role} must be among {', '.join(self._kinds)}{also} for problem "
-            f"{self.problem.name!r}; got {name!r}"
-        )
+        raise ValueError(f"{role} must be among {', '.join(fields)}{also}; got {name!r}")
 
     def column_dtype(self, name: str) -> np.dtype:
         """``int8`` regime codes, ``bool`` for flags, else ``float64``."""
@@ -454,15 +464,18 @@ class ProblemSweep(Sweep):
         return out | ({"samples": self.samples, "seed": self.seed} if self.random else {})
 
     def _columns(self, values: dict[str, Any], n: int) -> dict[str, np.ndarray]:
-        """The solver's input columns, each of length ``n``."""
+        """The solver's input columns, each of length ``n``: a value held for every point is
+        one value broadcast (a read-only view of stride 0, no copy)."""
         out: dict[str, np.ndarray] = {}
         for each in self.problem.inputs:
             if each.text:
-                out[each.name] = np.full(n, self.text[each.name], dtype=object)
+                value = np.empty((), dtype=object)
+                value[()] = self.text[each.name]
             elif each.name in values:
-                out[each.name] = np.broadcast_to(np.asarray(values[each.name], float), (n,))
+                value = np.asarray(values[each.name], float)
             else:
-                out[each.name] = np.full(n, self._held.get(each.name, np.nan))
+                value = np.asarray(self._held.get(each.name, np.nan), float)
+            out[each.name] = np.broadcast_to(value, (n,))
         return out
 
     def _solve(self, values: dict[str, Any], n: int, fields: Any = None) -> dict[str, Any]:

@@ -10,7 +10,6 @@ warns once that it is deprecated.
 from __future__ import annotations
 
 import os
-import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,6 +17,7 @@ from typing import Any
 
 from ..model.problems import SPHERE_PRESETS
 from ..model.registry import detect
+from ._deprecated import warn_deprecated
 from ._tables import BatchError
 
 __all__ = ["SPHERES", "BALL", "SphereBatchSummary", "sphere_kind", "run_sphere_batch"]
@@ -26,7 +26,6 @@ __all__ = ["SPHERES", "BALL", "SphereBatchSummary", "sphere_kind", "run_sphere_b
 SPHERES = SPHERE_PRESETS
 #: Velocity and spin columns of one ball (ball 2's end in ``2``).
 BALL = ("vx", "vy", "vz", "wx", "wy", "wz")
-_WARNED: set[str] = set()
 
 
 @dataclass(frozen=True)
@@ -84,14 +83,8 @@ def run_sphere_batch(
     """
     from .batch import run_batch
 
-    if "run_sphere_batch" not in _WARNED:
-        _WARNED.add("run_sphere_batch")
-        warnings.warn(
-            "run_sphere_batch is deprecated: use spinimpact.io.batch.run_batch, which solves "
-            "files of every registered problem (problem='sphere' or 'pair')",
-            DeprecationWarning,
-            stacklevel=2,
-        )
+    warn_deprecated("run_sphere_batch", "spinimpact.io.batch.run_batch, which solves files of "
+                    "every registered problem (problem='sphere' or 'pair')")  # fmt: skip
     name = None if pair is None else ("pair" if pair else "sphere")
 
     def check(kind: str) -> None:

@@ -27,11 +27,12 @@ INPUTS]``), point ``i`` taking the stream's ``i``-th number, so the points are t
 same whatever the chunk size or the Dask cluster, and the first ``n`` points of a
 longer sweep are those of a sweep of ``n``.
 
-A planar body or a pendulum is swept by
-:class:`~spinimpact.io.planar_sweep.PlanarSweep`, a :class:`Sweep` with its own
-inputs, fields and regimes (:attr:`Sweep.inputs`, :meth:`Sweep.field_name`,
-:attr:`Sweep.regimes`), run by the same :func:`run_sweep`. Every output describes the
-sweep (:meth:`Sweep.description`: regimes, body, axes, seed) and each column's unit.
+Every other problem (a sphere in 3D, a planar body or a pendulum, a body under a
+tangential law, two spheres) is swept by :class:`~spinimpact.io.problem_sweep.ProblemSweep`,
+a :class:`Sweep` with its own inputs, fields and regimes (:attr:`Sweep.inputs`,
+:meth:`Sweep.field_name`, :attr:`Sweep.regimes`), run by the same :func:`run_sweep`. Every
+output describes the sweep (:meth:`Sweep.description`: regimes, body, axes, seed) and each
+column's unit.
 """
 
 from __future__ import annotations

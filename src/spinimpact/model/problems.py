@@ -81,19 +81,42 @@ def _vector(prefix: str, unit: str, what: str, vector: str, suffix: str = "", de
     )
 
 
+def _value(column: np.ndarray) -> Any:
+    """A column that is one value broadcast to every row (a stride of 0: an input a sweep
+    holds fixed, a default) as that value, else the column: a body or a surface of numbers
+    is solved as one, as fast as one, with the same numbers."""
+    if column.ndim == 1 and column.size and column.strides == (0,):
+        return column[0] if column.dtype == object else float(column[0])
+    return column
+
+
+def _same(column: np.ndarray) -> bool:
+    """Whether every row of a non-empty column holds the same value."""
+    return column.strides == (0,) or bool((column == column[0]).all())
+
+
 def _one_body(c: dict[str, np.ndarray], suffix: str = "") -> Body:
-    """The rows' body: one preset for all (the common case, without a name per row), or
-    each row's preset or radius of gyration."""
+    """The rows' body: one preset for all (the common case, without a name per row), one
+    radius of gyration for all, or each row's preset or radius of gyration."""
     gyration, names = c[f"gyration{suffix}"], c[f"body{suffix}"]
     mass, radius = c[f"mass{suffix}"], c[f"radius{suffix}"]
-    if names.size and np.isnan(gyration).all() and (names == names[0]).all():
-        return Body.preset(str(names[0]), mass=mass, radius=radius)
+    if names.size and np.isnan(gyration).all() and _same(names):
+        return Body.preset(str(names[0]), mass=_value(mass), radius=_value(radius))
+    if np.ndim(_value(gyration)) == 0 and not np.isnan(gyration[0]):
+        return Body(mass=_value(mass), radius=_value(radius), gyration=_value(gyration))
     preset = np.where(np.isnan(gyration), names, "")
     return Body.from_columns(mass=mass, radius=radius, preset=preset, gyration=gyration)
 
 
 def _stack(c: dict[str, np.ndarray], *names: str) -> np.ndarray:
     return np.stack([c[n] for n in names], -1)
+
+
+def _plane(c: dict[str, np.ndarray], *names: str) -> Any:
+    """A surface's (or a contact's) vector from the columns ``names``: one vector where it
+    is the same in every row, else one a row."""
+    values = tuple(_value(c[n]) for n in names)
+    return values if not any(np.ndim(v) for v in values) else _stack(c, *names)
 
 
 def _ends(ranges: Mapping[str, tuple[float, float]], name: str) -> tuple[float, ...]:
@@ -154,6 +177,8 @@ PAPER = register(
 def _laws(c: dict[str, np.ndarray], solve_one) -> Any:
     """Solve each law's rows at once and put the columns back in row order."""
     law = c["law"]
+    if law.size and _same(law):
+        return solve_one(c, str(law[0]))
     used = [each for each in LAWS if (law == each).any()]
     if len(used) == 1:
         return solve_one(c, used[0])
@@ -189,7 +214,7 @@ def _solve_planar(c: dict[str, np.ndarray], tangential: Any = None) -> Any:
     return _laws(
         c,
         lambda c, law: solve_planar(
-            PlanarBody(*(c[n] for n in PlanarBody.COLUMNS)),
+            PlanarBody(*(_value(c[n]) for n in PlanarBody.COLUMNS)),
             c["vx"],
             c["vy"],
             c["omega"],
@@ -204,7 +229,7 @@ def _solve_pendulum(c: dict[str, np.ndarray], tangential: Any = None) -> Any:
     return _laws(
         c,
         lambda c, law: solve_pendulum(
-            Pendulum(*(c[n] for n in Pendulum.COLUMNS)),
+            Pendulum(*(_value(c[n]) for n in Pendulum.COLUMNS)),
             c["omega"],
             mu=c["mu"],
             kappa=c["kappa"],
@@ -246,11 +271,15 @@ PROCESS_COLUMNS = (
 def _planar_process(c: dict[str, np.ndarray], tangential: Any = None) -> Any:
     """:data:`PROCESS_COLUMNS` by the steps of :func:`~spinimpact.solve_planar` (or
     :func:`~spinimpact.solve_pendulum`) without the works and energies: the same kernels on
-    the same numbers (``regime`` as indices into :data:`PLANAR_REGIMES`)."""
+    the same numbers (``regime`` as indices into :data:`PLANAR_REGIMES`; a column the same
+    in every row may come back as one number)."""
     return _laws(c, _process_one)
 
 
 def _process_one(c: dict[str, np.ndarray], law: str) -> _Columns:
+    # a sweep's fixed inputs as numbers (the columns may come back as numbers: a sweep
+    # broadcasts them), its varying ones as arrays
+    c = {name: _value(column) for name, column in c.items()}
     omega = c["omega"]
     if "px" in c:  # a pendulum: its centre moves with omega
         body: Any = Pendulum(*(c[n] for n in Pendulum.COLUMNS))
@@ -369,8 +398,8 @@ PENDULUM = register(
 # -- spheres in 3D -----------------------------------------------------------------------------
 def _solve_sphere(c: dict[str, np.ndarray], tangential: Any = None) -> SphereImpact:
     plane = Surface(
-        normal=_stack(c, "normal_x", "normal_y", "normal_z"),
-        velocity=_stack(c, *(f"surface_velocity_{k}" for k in "xyz")),
+        normal=_plane(c, "normal_x", "normal_y", "normal_z"),
+        velocity=_plane(c, *(f"surface_velocity_{k}" for k in "xyz")),
     )
     return solve_sphere(
         _one_body(c),
@@ -448,7 +477,7 @@ def _solve_pair(c: dict[str, np.ndarray], tangential: Any = None) -> PairImpact:
         spin1=_stack(c, "wx", "wy", "wz"),
         velocity2=_stack(c, "vx2", "vy2", "vz2"),
         spin2=_stack(c, "wx2", "wy2", "wz2"),
-        normal=_stack(c, "normal_x", "normal_y", "normal_z"),
+        normal=_plane(c, "normal_x", "normal_y", "normal_z"),
         mu=c["mu"],
         kappa=c["kappa"],
     )
