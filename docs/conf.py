@@ -31,6 +31,7 @@ extensions = [
     "myst_parser",
     "sphinx_gallery.gen_gallery",
     "_ext.cli_reference",
+    "_ext.internals",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -62,7 +63,6 @@ myst_heading_anchors = 3
 # -- API reference -----------------------------------------------------------------------
 autosummary_generate = True
 autodoc_typehints = "none"
-autodoc_default_options = {"members": False}
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
@@ -71,11 +71,15 @@ numpydoc_validation_checks: set[str] = set()
 # References to NumPy, SciPy, Matplotlib and the standard library stay plain text (no
 # inventories are fetched): the nitpicky check ignores them by name.
 nitpicky = True
+# numpydoc turns a docstring's References section into citations and warns when the text
+# does not cite one; the module docstrings list the works they rest on without citing each.
+suppress_warnings = ["ref.citation"]
 nitpick_ignore_regex = [
     (r"py:.*", r"(numpy|np|scipy|matplotlib|pyarrow|dask|distributed|numba|jax|click)\..*"),
     (r"py:.*", r"(array_like|array-like|ndarray|optional|callable|scalar|default.*)"),
     (r"py:class", r"(int|float|str|bool|dict|list|tuple|bytes|object|None|type|slice)"),
     (r"py:class", r"(pathlib\.Path|os\.PathLike.*|collections\.abc\..*|typing\..*)"),
+    (r"py:.*", r"(atexit|signal|tracemalloc|warnings|threading|concurrent)(\..*)?"),
 ]
 
 # -- the gallery -----------------------------------------------------------------------

@@ -46,7 +46,7 @@ __all__ = [
 #: [1e-50, 1e50] keeps every product the formulas form (m v^2, zeta mu^2, ...)
 #: far from overflow and underflow, so no result is silently inf, NaN or 0.
 LARGEST = 1e50
-#: Smallest magnitude accepted for strictly positive inputs (mass, radius, |vy|, ...).
+#: Smallest magnitude accepted for strictly positive inputs (mass, radius, ``|vy|``, ...).
 SMALLEST = 1e-50
 #: Largest zeta = 1 + R^2/rho^2 accepted (R/rho up to 1e10).
 MAX_ZETA = 1e20

@@ -1,10 +1,11 @@
 """A sequence of flights and bounces for many balls at once, then the roll to rest.
 
 :func:`fly` joins :mod:`spinimpact.core.flight` (each arc to the ground, the impact located to
-integrator precision, or the exact parabola without air), :func:`~spinimpact.core.ground.
-ground_bounce` (the exact 3D impact) and :func:`~spinimpact.core.ground.roll_to_rest`. A
-ball stops bouncing when its vertical rebound speed falls below ``settle_speed`` (it then
-slides and rolls on the ground), after ``max_bounces`` bounces, or at ``t_stop``.
+integrator precision, or the exact parabola without air),
+:func:`~spinimpact.core.ground.ground_bounce` (the exact 3D impact) and
+:func:`~spinimpact.core.ground.roll_to_rest`. A ball stops bouncing when its vertical rebound
+speed falls below ``settle_speed`` (it then slides and rolls on the ground), after
+``max_bounces`` bounces, or at ``t_stop``.
 
 The loop runs over the arcs (the first flight, the flight after the first bounce, ...); each
 arc advances every ball still bouncing, so the work is vectorized over the balls.
@@ -78,8 +79,8 @@ def fly(
     record : bool
         Keep the path for pictures.
     rebound_slip : callable, optional
-        A tangential compliance law for the bounces (:func:`~spinimpact.core.ground.
-        ground_bounce`).
+        A tangential compliance law for the bounces
+        (:func:`~spinimpact.core.ground.ground_bounce`).
     frictionless : bool
         That law applies no friction (its bounces are labelled ``frictionless``).
     wall : tuple, optional

@@ -11,7 +11,8 @@ on the seam of :mod:`spinimpact.core.impulse` (contact-point slip ``c_t``, norma
 ``c_n < 0``, ``mass = 1/W_nn``, ``zeta = W_tt/W_nn``, ``W_tn = 0``): the friction impulse
 is then ``f_1 = (c_t^+ - c_t^-)/W_tt = -(1 + beta) m c_t^-/zeta`` and the normal problem is
 the rigid one (``c_n^+ = -kappa c_n^-``). The same kernels serve the paper's disk and
-sphere and the 3D sphere, whose slip keeps its direction (:mod:`.sphere3d`).
+sphere and the 3D sphere, whose slip keeps its direction
+(:mod:`spinimpact.core.sphere3d`).
 
 Sliding throughout. With Coulomb friction over the whole normal impulse
 ``tau_1 = (1 + kappa) m |c_n^-|``, ``c_t^+ = c_t^- - sign(c_t^-) zeta mu (1 + kappa)|c_n^-|``:
@@ -123,7 +124,7 @@ def walton_restitution(slip, vy, zeta, mu, kappa, beta0):
 
     Notes
     -----
-    Walton [2]_ (also Foerster et al. [3]_, eqs. 3-5): ``beta = beta_0`` if that takes
+    Walton (1993) (also Foerster et al. 1994, eqs. 3-5): ``beta = beta_0`` if that takes
     less friction impulse than Coulomb's limit allows, otherwise the contact slides
     throughout (``beta = beta_slide``). ``beta_0 = 0`` gives the rigid law exactly: stick
     (``c_t^+ = 0``) when ``beta_slide >= 0``, the rigid sliding rebound otherwise.
@@ -222,7 +223,7 @@ def mindlin_stiffness_ratio(poisson_ratio):
     Mindlin's initial tangential stiffness is ``8 G* a``; their ratio ``4 G*/E*`` is
     ``2(1-nu)/(2-nu)`` when one body is rigid (``E* = E/(1-nu^2)``, ``G* = G/(2-nu)``) or
     both are of one material, with ``G = E/(2(1+nu))`` (Johnson, Contact Mechanics, 1985,
-    sections 4.2 and 7.2; Maw et al. [5]_).
+    sections 4.2 and 7.2; Maw et al. 1976).
 
     Examples
     --------
@@ -257,7 +258,7 @@ def maw_angles(slip, vy, slip_after, vy_after, mu, poisson_ratio):
 
     Notes
     -----
-    Maw et al. [5]_ [6]_ define the local angles by the contact point's velocities; with
+    Maw et al. (1976, 1981) define the local angles by the contact point's velocities; with
     ``chi = zeta (1-nu)/(2-nu)`` (their parameter, 1.2558 for a disk of
     ``nu = 0.28``) the rigid law gives ``psi_2 = (psi_1 - 2 chi (1+kappa))/kappa`` while the
     contact slides throughout (``psi_2 = psi_1 - 4 chi`` for ``kappa = 1``, their elastic

@@ -77,7 +77,7 @@ __all__ = ["HERTZ", "NormalHistory", "MdrTrace", "hunt_crossley_damping", "norma
            "spring_positions", "mdr_slip", "mdr_trace", "spring_update",
            "active_springs"]  # fmt: skip
 
-#: Hertz stiffness in the solver's units (m = 1, |v_n| = 1, R = 1): elastic compression 1.
+#: Hertz stiffness in the solver's units (m = 1, ``|v_n|`` = 1, R = 1): elastic compression 1.
 HERTZ = 1.25
 
 #: Impacts stepped together at most (rows of the springs' array), to bound memory.

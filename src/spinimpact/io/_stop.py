@@ -41,7 +41,7 @@ _SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM") if hasattr(si
 
 
 class Stopped(BaseException):  # noqa: N818 (like KeyboardInterrupt: not an error of the input)
-    """The run was stopped by a signal; :attr:`signum` says which.
+    """The run was stopped by a signal; ``signum`` says which.
 
     A ``BaseException``, so ``except Exception`` does not swallow it.
     """

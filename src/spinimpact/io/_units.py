@@ -1,7 +1,8 @@
 """Each column's SI unit in a file's metadata (the vocabulary: :mod:`spinimpact.model.units`).
 
 Parquet output carries each column's unit in its field metadata (``{"unit": "m/s"}``),
-and CSV output a side file (:func:`write_units_file`), so a file read years later still
+and CSV output a side file (``out.units.json`` beside ``out.csv``,
+:func:`~spinimpact.io.problem_batch.units_file`), so a file read years later still
 says what its numbers are. Text and true/false columns (``regime``, ``law``, the outcome
 flags) have no unit; a number without dimension has ``"1"``.
 """

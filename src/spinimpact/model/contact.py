@@ -67,7 +67,7 @@ class NormalImpact(Result):
     """The normal (frictionless, spinless) part of a compliant impact at one speed
     (:meth:`ContactLaw.normal_impact`)."""
 
-    speed: Array  #: impact speed |vy|, m/s
+    speed: Array  #: impact speed ``|vy|``, m/s
     restitution: Array  #: Newton's -v+/v- (eq. 1.1)
     duration: Array  #: contact time, s
     peak_force: Array  #: largest normal force, N
@@ -194,7 +194,7 @@ class LinearContact(ContactLaw):
 
     The force never pulls: the contact ends when ``N`` falls to zero, which for
     ``c > 0`` is before ``delta`` returns to zero. The law is linear, so the
-    restitution depends on the damping ratio ``c/(2 sqrt(k m))`` only [3]_.
+    restitution depends on the damping ratio ``c/(2 sqrt(k m))`` only (Stronge 2000).
     """
 
     stiffness: float
@@ -245,10 +245,10 @@ class HuntCrossleyContact(ContactLaw):
     -----
     .. math:: N = \max\left(k \delta^n \left(1 + \tfrac{3}{2}\alpha\dot\delta\right),\ 0\right)
 
-    Hunt and Crossley [2]_ made the damping proportional to the elastic force so
+    Hunt and Crossley (1975) made the damping proportional to the elastic force so
     that the force is continuous at first touch; the restitution then depends on
     ``alpha v`` only and is about ``1 - alpha v`` for small ``alpha v``. With
-    ``n = 3/2`` and ``alpha = 0`` this is Hertz's elastic law [1]_.
+    ``n = 3/2`` and ``alpha = 0`` this is Hertz's elastic law (Hertz 1882).
     """
 
     stiffness: float
@@ -312,10 +312,10 @@ class HertzContact(HuntCrossleyContact):
             \left(1 + \tfrac{3}{2}\alpha\dot\delta\right), \qquad
         E^* = \frac{E}{1 - \nu^2}
 
-    Hertz's law [1]_ is for point contact (a sphere); a cylinder or disk pressed
+    Hertz's law (1882) is for point contact (a sphere); a cylinder or disk pressed
     along a line has no closed power law - use :class:`LinearContact` or
     :class:`HuntCrossleyContact` with a fitted stiffness there. The damping is
-    Hunt and Crossley's [2]_.
+    Hunt and Crossley's (1975).
     """
 
     def __init__(

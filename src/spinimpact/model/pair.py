@@ -33,14 +33,13 @@ _TOUCH_RTOL = 1e-9
 class PairImpact(Result):
     """Everything :func:`solve_pair` computes (names as :class:`~spinimpact.Impact`'s).
 
-        ``normal`` points from ball 2's centre to ball 1's; ``slip_*`` and
-        ``normal_velocity_*`` are the contact point's velocity of ball 1 relative to ball 2;
-        ``friction_impulse`` acts on ball 1 (its opposite on ball 2); energies are the pair's
+    ``normal`` points from ball 2's centre to ball 1's; ``slip_*`` and
+    ``normal_velocity_*`` are the contact point's velocity of ball 1 relative to ball 2;
+    ``friction_impulse`` acts on ball 1 (its opposite on ball 2); energies are the pair's
     (``dissipated_fraction``: of the kinetic energy in the centre-of-mass frame, the part an
-    impact can lose);
-        ``angle_between_paths`` is the angle between the two centres' velocities after the
-        impact, rad (NaN where one is at rest). Columns of the two balls are prefixed
-        ``ball1_``, ``ball2_``.
+    impact can lose); ``angle_between_paths`` is the angle between the two centres'
+    velocities after the impact, rad (NaN where one is at rest). Columns of the two balls
+    are prefixed ``ball1_``, ``ball2_``.
     """
 
     ball1: Body

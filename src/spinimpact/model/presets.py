@@ -130,7 +130,7 @@ class Ground:
 
 @dataclass(frozen=True, eq=False)
 class Wall:
-    """A vertical wall across the ball's way: the plane ``h . p = distance`` (m), ``h`` the
+    """A vertical wall across the ball's way: the plane ``dot(h, p) = distance`` (m), ``h`` the
     horizontal heading ``direction`` (degrees, counter-clockwise seen from above, 0: ``+x``),
     facing the launch point, with its own ``mu`` and ``kappa``."""
 

@@ -115,10 +115,10 @@ class SphereHistory(Result):
     tau: np.ndarray  #: normal impulse, N s
     velocity: np.ndarray  #: centre velocity, (n, 3), m/s
     spin: np.ndarray  #: spin vector, (n, 3), rad/s
-    slip_speed: np.ndarray  #: |c_t|, m/s
+    slip_speed: np.ndarray  #: ``|c_t|``, m/s
     normal_velocity: np.ndarray  #: c_n, m/s
-    force_ratio: np.ndarray  #: |F|/N while slipping, 0 once stuck
-    friction_magnitude: np.ndarray  #: |F(tau)|, N s
+    force_ratio: np.ndarray  #: ``|F|/N`` while slipping, 0 once stuck
+    friction_magnitude: np.ndarray  #: ``|F(tau)|``, N s
     kinetic_energy: np.ndarray  #: E(tau), J (ground frame)
     tau0: float
     tau_star: float
