@@ -96,8 +96,12 @@ def link_targets(text):
     return [*_LINK.findall(prose), *_REFDEF.findall(prose), *_HTML.findall(prose)]
 
 
+_TARGET = re.compile(r"^\s*(?:- )?\(([\w\-]+)\)=\s*$", re.M)
+
+
 def anchors(text):
-    """Anchors a page offers: GitHub's heading slugs (duplicates numbered) and explicit ids."""
+    """Anchors a page offers: GitHub's heading slugs (duplicates numbered), explicit ids and
+    MyST targets (``(name)=`` on a line of its own, as references.md marks each work)."""
     found, seen = set(), {}
     for heading in re.findall(r"^#{1,6}\s+(.*?)\s*#*\s*$", _FENCE.sub("", text), re.M):
         slug = re.sub(r"[^\w\- ]", "", heading.lower()).replace(" ", "-")
@@ -105,6 +109,7 @@ def anchors(text):
         seen[slug] = count + 1
         found.add(slug if count == 0 else f"{slug}-{count}")
     found.update(re.findall(r"\b(?:id|name)\s*=\s*\"([^\"]+)\"", text))
+    found.update(_TARGET.findall(text))
     return found
 
 
@@ -225,7 +230,7 @@ REFERENCES = ROOT / "docs" / "references.md"
 
 def _entry(key):
     text = REFERENCES.read_text(encoding="utf-8")
-    start = text.index(f'id="{key}"')
+    start = text.index(f"({key})=")
     end = text.find("\n- ", start)
     return " ".join(text[start : end if end > 0 else None].split())
 
