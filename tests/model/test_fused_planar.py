@@ -9,6 +9,8 @@ from spinimpact import Pendulum, PlanarBody, solve_pendulum, solve_planar
 from spinimpact.core.planar import LAWS
 from spinimpact.model import _fused_planar
 
+from tests.same_result import array_path, assert_same
+
 pytest.importorskip("numba")
 
 N = 4000
@@ -16,23 +18,7 @@ N = 4000
 
 def _numpy_path(monkeypatch, call):
     """``call()`` with the fused path switched off (the NumPy kernels)."""
-    with monkeypatch.context() as m:
-        m.setattr(_fused_planar, "THRESHOLD", 10**18)
-        return call()
-
-
-def _same(a, b) -> bool:
-    a, b = np.asarray(a), np.asarray(b)
-    if a.dtype.kind != "f":
-        return a.dtype == b.dtype and np.array_equal(a, b)
-    return b.dtype == a.dtype and np.array_equal(a.view(np.int64), b.view(np.int64))
-
-
-def _assert_same(fast, slow) -> None:
-    fc, sc = fast.columns(), slow.columns()
-    assert list(fc) == list(sc)
-    assert [name for name in fc if not _same(fc[name], sc[name])] == []
-    assert all(not np.asarray(c).flags.writeable for c in fc.values() if np.ndim(c))
+    return array_path(monkeypatch, _fused_planar, "planar_impact", call)
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -58,7 +44,7 @@ def test_planar_fused_equals_numpy(monkeypatch, law):
     fast = solve_planar(body, vx, vy, omega, mu=mu, kappa=kappa, law=law)
     slow = _numpy_path(monkeypatch, lambda: solve_planar(body, vx, vy, omega, mu=mu,
                                                           kappa=kappa, law=law))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
     assert len(np.unique(fast.regime)) >= 4
 
 
@@ -74,7 +60,7 @@ def test_pendulum_fused_equals_numpy(monkeypatch, law):
     fast = solve_pendulum(pendulum, omega, mu=mu, kappa=kappa, law=law)
     slow = _numpy_path(monkeypatch, lambda: solve_pendulum(pendulum, omega, mu=mu,
                                                             kappa=kappa, law=law))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
 
 
 def test_planar_broadcast_and_refusal_unchanged(monkeypatch):
@@ -83,7 +69,7 @@ def test_planar_broadcast_and_refusal_unchanged(monkeypatch):
     fast = solve_planar(body, 0.5, -2.0, omega, mu=0.3, kappa=0.6)
     slow = _numpy_path(monkeypatch, lambda: solve_planar(body, 0.5, -2.0, omega, mu=0.3,
                                                           kappa=0.6))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
     assert omega.flags.writeable
     with pytest.raises(ValueError, match="must approach the surface"):
         solve_planar(body, 0.0, [-1.0, 1.0], 0.0, mu=0.3, kappa=0.5)

@@ -8,32 +8,16 @@ import pytest
 from spinimpact import Body, Surface, solve_pair, solve_sphere
 from spinimpact.model import _fused_sphere
 
+from tests.same_result import array_path, assert_same
+
 pytest.importorskip("numba")
 
 N = 4000
 
 
-def _numpy_path(monkeypatch, call):
+def _numpy_path(monkeypatch, call, hook="sphere_impact"):
     """``call()`` with the fused path switched off (the NumPy kernels)."""
-    with monkeypatch.context() as m:
-        m.setattr(_fused_sphere, "THRESHOLD", 10**18)
-        return call()
-
-
-def _same(a, b) -> bool:
-    """Equal bit for bit (NaN where NaN), whatever the dtype."""
-    a, b = np.asarray(a), np.asarray(b)
-    if a.dtype.kind != "f":
-        return a.dtype == b.dtype and np.array_equal(a, b)
-    return b.dtype == a.dtype and np.array_equal(a.view(np.int64), b.view(np.int64))
-
-
-def _assert_same(fast, slow) -> None:
-    fc, sc = fast.columns(), slow.columns()
-    assert list(fc) == list(sc)
-    differ = [name for name in fc if not _same(fc[name], sc[name])]
-    assert differ == []
-    assert all(not np.asarray(c).flags.writeable for c in fc.values())
+    return array_path(monkeypatch, _fused_sphere, hook, call)
 
 
 def _incidences(rng, n=N):
@@ -63,7 +47,7 @@ def test_sphere_fused_equals_numpy(monkeypatch, moving):
     fast = solve_sphere(ball, v, w, mu=mu, kappa=kappa, surface=surface)
     slow = _numpy_path(monkeypatch, lambda: solve_sphere(ball, v, w, mu=mu, kappa=kappa,
                                                           surface=surface))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
     assert set(np.unique(fast.regime)) >= {"slip", "stick-compression", "stick-restitution"}
 
 
@@ -74,7 +58,7 @@ def test_sphere_fused_broadcasts_and_keeps_inputs_writable(monkeypatch):
     fast = solve_sphere(ball, v, w, mu=0.4, kappa=[0.9, 0.5, 0.1])
     slow = _numpy_path(monkeypatch, lambda: solve_sphere(ball, v, w, mu=0.4,
                                                           kappa=[0.9, 0.5, 0.1]))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
     assert v.flags.writeable and w.flags.writeable
     v[0, 0] = 99.0  # the result holds its own copy of the inputs
     assert fast.before.vx[0] == 1.0
@@ -99,7 +83,7 @@ def test_sphere_callable_kappa_takes_numpy_path(monkeypatch):
     fast = solve_sphere(ball, v, [0.0, 0.0, 10.0], mu=0.3, kappa=model)
     slow = _numpy_path(monkeypatch, lambda: solve_sphere(ball, v, [0.0, 0.0, 10.0], mu=0.3,
                                                           kappa=model))  # fmt: skip
-    _assert_same(fast, slow)
+    assert_same(fast, slow)
 
 
 def test_pair_fused_equals_numpy(monkeypatch):
@@ -117,8 +101,8 @@ def test_pair_fused_equals_numpy(monkeypatch):
                       normal=normal, mu=mu, kappa=kappa)  # fmt: skip
     slow = _numpy_path(monkeypatch, lambda: solve_pair(
         ball1, ball2, velocity1=v1, spin1=w1, velocity2=v2, spin2=w2, normal=normal, mu=mu,
-        kappa=kappa))  # fmt: skip
-    _assert_same(fast, slow)
+        kappa=kappa), "pair_impact")  # fmt: skip
+    assert_same(fast, slow)
 
 
 def test_pair_refusal_unchanged():

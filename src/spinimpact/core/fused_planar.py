@@ -28,6 +28,7 @@ import numpy as np
 
 from . import law as _law  # registers the per-contact law for compiled callers
 from .fused import HAVE_NUMBA, _njit
+from .fused_impact import _column
 
 __all__ = ["HAVE_NUMBA", "PLANAR_FLOATS", "planar_fields"]
 
@@ -119,17 +120,6 @@ if HAVE_NUMBA:  # pragma: no branch - depends on the optional extra
     _planar_kernel = _njit(_planar_kernel)
 
 
-def _number_rows(a: Any, shape: tuple[int, ...]) -> tuple[np.ndarray, int]:
-    """A read-only 1-D float64 input and its step: 0 for one value repeated."""
-    a = np.broadcast_to(np.asarray(a, dtype=np.float64), shape).reshape(-1)
-    if a.size <= 1 or a.strides[0] == 0:
-        col, step = (np.array(a[:1]) if a.size else np.zeros(1)), 0
-    else:
-        col, step = np.ascontiguousarray(a), 1
-    col.setflags(write=False)
-    return col, step
-
-
 def planar_fields(kind: int, law: int, *inputs: Any) -> tuple[dict, np.ndarray, np.ndarray]:
     """Every field of many planar impacts, equal bit for bit to the array path's.
 
@@ -168,7 +158,7 @@ def planar_fields(kind: int, law: int, *inputs: Any) -> tuple[dict, np.ndarray, 
     if len(inputs) != len(INPUTS):
         raise TypeError(f"planar_fields takes {len(INPUTS)} inputs, got {len(inputs)}")
     shape = np.broadcast_shapes(*(np.shape(a) for a in inputs))
-    x, s = zip(*(_number_rows(a, shape) for a in inputs), strict=True)
+    x, s = zip(*(_column(a, shape) for a in inputs), strict=True)
     n = int(np.prod(shape, dtype=np.int64))
     out = np.empty((len(PLANAR_FLOATS), n))
     code = np.empty(n, dtype=np.int8)

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 
-from .scalar import contact_dissipated_energy, contact_impulses, regime_code
+from .scalar import contact_dissipated_energy, contact_impact, contact_impulses, regime_code
 
 __all__ = [
     "sphere_contact",
@@ -33,6 +33,8 @@ __all__ = [
     "sphere_dissipated_energy",
     "pair_parameters",
     "pair_rebound",
+    "sphere_impact_fields",
+    "pair_impact_fields",
 ]
 
 
@@ -170,4 +172,111 @@ def pair_rebound(velocity1, spin1, velocity2, spin2, normal, mass1, radius1, ine
         velocity2[1] - total[1] / mass2,
         velocity2[2] - total[2] / mass2,
         b[0], b[1], b[2],
+    )  # fmt: skip
+
+
+def _energy(mass, inertia, velocity, spin):
+    return 0.5 * mass * _dot(velocity, velocity) + 0.5 * inertia * _dot(spin, spin)
+
+
+def sphere_impact_fields(velocity, spin, normal, surface_velocity, mass, radius, inertia, zeta,
+                         mu, kappa):  # fmt: skip
+    """Every field of :func:`spinimpact.solve_sphere`'s result for one impact.
+
+    Returns
+    -------
+    tuple
+        ``(c_n, c_t, v+, w+, slip_after, c_n+, tau0, tau_star, tau1, F, impulse_ratio,
+        E-, E+, dissipated_energy, dissipated_fraction, W_c^n, W_c^t, W_r^n, W_r^t,
+        newton, poisson, energetic, rebound_speed, up, along, topspin, sidespin, gyrospin,
+        regime_code, grips)``: 3-tuples for the vectors ``c_t, v+, w+, slip_after, F``; the
+        rebound angle is ``numpy.arctan2(up, along)`` (left to NumPy, whose ``atan2`` the
+        array path uses); ``topspin`` and ``gyrospin`` are NaN without travel along the
+        surface after the impact.
+    """
+    n, vs = normal, surface_velocity
+    cn, ct, speed, e = sphere_contact(velocity, spin, n, radius, vs)
+    (tau0, tau_star, tau1, f1, _a, _b, code, wcn, wct, wrn, wrt, loss, _c, _d) = contact_impact(
+        speed, cn, mass, zeta, mu, kappa
+    )
+    friction = (f1 * e[0], f1 * e[1], f1 * e[2])
+    total = (tau1 * n[0] + friction[0], tau1 * n[1] + friction[1], tau1 * n[2] + friction[2])
+    v1 = (velocity[0] + total[0] / mass, velocity[1] + total[1] / mass,
+          velocity[2] + total[2] / mass)  # fmt: skip
+    w1 = _spin_change(spin, n, radius, inertia, friction)
+    cn1, ct1, _e, _f = sphere_contact(v1, w1, n, radius, vs)
+    vrel = (velocity[0] - vs[0], velocity[1] - vs[1], velocity[2] - vs[2])
+    e0_rel = _energy(mass, inertia, vrel, spin)
+    stuck = speed <= (1.0 + kappa) * zeta * mu * abs(cn)
+    rel = (v1[0] - vs[0], v1[1] - vs[1], v1[2] - vs[2])
+    up = _dot(rel, n)
+    along = (rel[0] - up * n[0], rel[1] - up * n[1], rel[2] - up * n[2])
+    travel = math.sqrt(_dot(along, along))
+    if travel > 0.0:
+        et = (along[0] / travel, along[1] / travel, along[2] / travel)
+        top, gyro = _dot(w1, _cross(n, et)), _dot(w1, et)
+    else:
+        top = gyro = math.nan
+    eta2 = -wrn / wcn
+    return (
+        cn, ct, v1, w1, (0.0, 0.0, 0.0) if stuck else ct1, cn1, tau0, tau_star, tau1,
+        friction, (-f1 + 0.0) / tau1, _energy(mass, inertia, velocity, spin),
+        _energy(mass, inertia, v1, w1), loss, loss / e0_rel, wcn, wct, wrn, wrt, -cn1 / cn,
+        (tau1 - tau0) / tau0, math.sqrt(eta2 if eta2 > 0.0 else 0.0), math.sqrt(_dot(v1, v1)),
+        up, travel, top, _dot(w1, n), gyro, code, stuck,
+    )  # fmt: skip
+
+
+def pair_impact_fields(velocity1, spin1, velocity2, spin2, normal, mass1, radius1, inertia1,
+                       mass2, radius2, inertia2, mu, kappa):  # fmt: skip
+    """Every field of :func:`spinimpact.solve_pair`'s result for one impact of two spheres
+    (``normal`` from ball 2's centre to ball 1's, of unit length).
+
+    Returns
+    -------
+    tuple
+        ``(c_n, c_t, v1+, w1+, v2+, w2+, slip_after, c_n+, tau0, tau_star, tau1, F,
+        impulse_ratio, E-, E+, dissipated_energy, dissipated_fraction, W_c^n, W_c^t, W_r^n,
+        W_r^t, newton, poisson, energetic, sine, cosine, regime_code, grips)``: the angle
+        between the paths after is ``numpy.arctan2(sine, cosine)`` (both NaN where a ball
+        is at rest after the impact).
+    """
+    n = normal
+    r2n = (radius2 * n[0], radius2 * n[1], radius2 * n[2])
+    a = _cross(spin2, r2n)
+    other = (velocity2[0] + a[0], velocity2[1] + a[1], velocity2[2] + a[2])
+    cn, ct, speed, e = sphere_contact(velocity1, spin1, n, radius1, other)
+    m, zeta = pair_parameters(mass1, inertia1, radius1, mass2, inertia2, radius2)
+    (tau0, tau_star, tau1, f1, _a, _b, code, wcn, wct, wrn, wrt, loss, _c, _d) = contact_impact(
+        speed, cn, m, zeta, mu, kappa
+    )
+    friction = (f1 * e[0], f1 * e[1], f1 * e[2])
+    total = (tau1 * n[0] + friction[0], tau1 * n[1] + friction[1], tau1 * n[2] + friction[2])
+    v1 = (velocity1[0] + total[0] / mass1, velocity1[1] + total[1] / mass1,
+          velocity1[2] + total[2] / mass1)  # fmt: skip
+    v2 = (velocity2[0] - total[0] / mass2, velocity2[1] - total[1] / mass2,
+          velocity2[2] - total[2] / mass2)  # fmt: skip
+    w1 = _spin_change(spin1, n, radius1, inertia1, friction)
+    w2 = _spin_change(spin2, n, radius2, inertia2, friction)
+    b = _cross(w2, r2n)
+    cn1, ct1, _e, _f = sphere_contact(v1, w1, n, radius1, (v2[0] + b[0], v2[1] + b[1],
+                                                             v2[2] + b[2]))  # fmt: skip
+    e0 = _energy(mass1, inertia1, velocity1, spin1) + _energy(mass2, inertia2, velocity2, spin2)
+    p = (mass1 * velocity1[0] + mass2 * velocity2[0], mass1 * velocity1[1] + mass2 * velocity2[1],
+         mass1 * velocity1[2] + mass2 * velocity2[2])  # fmt: skip
+    e_cm = e0 - 0.5 * _dot(p, p) / (mass1 + mass2)
+    stuck = speed <= (1.0 + kappa) * zeta * mu * abs(cn)
+    s1, s2 = math.sqrt(_dot(v1, v1)), math.sqrt(_dot(v2, v2))
+    sine = _cross(v1, v2)
+    if s1 > 0 and s2 > 0:
+        along, across = math.sqrt(_dot(sine, sine)), _dot(v1, v2)
+    else:
+        along = across = math.nan
+    eta2 = -wrn / wcn
+    return (
+        cn, ct, v1, w1, v2, w2, (0.0, 0.0, 0.0) if stuck else ct1, cn1, tau0, tau_star, tau1,
+        friction, (-f1 + 0.0) / tau1, e0,
+        _energy(mass1, inertia1, v1, w1) + _energy(mass2, inertia2, v2, w2), loss,
+        loss / e_cm, wcn, wct, wrn, wrt, -cn1 / cn, (tau1 - tau0) / tau0,
+        math.sqrt(eta2 if eta2 > 0.0 else 0.0), along, across, code, stuck,
     )  # fmt: skip

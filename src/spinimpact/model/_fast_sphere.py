@@ -20,7 +20,6 @@ from typing import Any
 import numpy as np
 
 from .._validation import SMALLEST
-from ..core import scalar as law
 from ..core import scalar3d as law3
 from ._fast import REGIMES, build, number
 
@@ -97,34 +96,41 @@ def sphere_impact(body: Any, velocity: Any, spin: Any, mu: Any, kappa: Any, surf
     mu_, k = number(mu, "mu"), number(kappa, "kappa")
     if v is None or w is None or n is None or vs is None or mu_ is None or k is None:
         return None
-    inertia = body.inertia
-    cn, ct, speed, e = law3.sphere_contact(v, w, n, radius, vs)
+    cn = law3.sphere_contact(v, w, n, radius, vs)[0]
     if not cn <= -SMALLEST:
         return None  # the array path says why (as solve refuses |vy| < SMALLEST)
-    (tau0, tau_star, tau1, f1, _, _, code, wcn, wct, wrn, wrt, loss, _, _) = law.contact_impact(
-        speed, cn, m, zeta, mu_, k
-    )
-    friction = (f1 * e[0], f1 * e[1], f1 * e[2])
-    total = (tau1 * n[0] + friction[0], tau1 * n[1] + friction[1], tau1 * n[2] + friction[2])
-    v1 = (v[0] + total[0] / m, v[1] + total[1] / m, v[2] + total[2] / m)
-    w1 = law3._spin_change(w, n, radius, inertia, friction)
-    cn1, ct1, _, _ = law3.sphere_contact(v1, w1, n, radius, vs)
-    dot = law3._dot
-    e0 = 0.5 * m * dot(v, v) + 0.5 * inertia * dot(w, w)
-    e1 = 0.5 * m * dot(v1, v1) + 0.5 * inertia * dot(w1, w1)
-    vrel = (v[0] - vs[0], v[1] - vs[1], v[2] - vs[2])
-    e0_rel = 0.5 * m * dot(vrel, vrel) + 0.5 * inertia * dot(w, w)
-    stuck = speed <= (1.0 + k) * zeta * mu_ * abs(cn)
-    rel = (v1[0] - vs[0], v1[1] - vs[1], v1[2] - vs[2])
-    up = dot(rel, n)
-    along = (rel[0] - up * n[0], rel[1] - up * n[1], rel[2] - up * n[2])
-    travel = math.sqrt(dot(along, along))
-    if travel > 0.0:
-        et = (along[0] / travel, along[1] / travel, along[2] / travel)
-        top, gyro = dot(w1, law3._cross(n, et)), dot(w1, et)
-    else:
-        top = gyro = _NAN
-    eta2 = -wrn / wcn
+    (
+        cn,
+        ct,
+        v1,
+        w1,
+        slip1,
+        cn1,
+        tau0,
+        tau_star,
+        tau1,
+        friction,
+        ratio,
+        e0,
+        e1,
+        loss,
+        fraction,
+        wcn,
+        wct,
+        wrn,
+        wrt,
+        newton,
+        poisson,
+        energetic,
+        speed,
+        up,
+        along,
+        top,
+        side,
+        gyro,
+        code,
+        stuck,
+    ) = law3.sphere_impact_fields(v, w, n, vs, m, radius, body.inertia, zeta, mu_, k)
     f = _FLOAT
 
     def vec(a: tuple) -> Any:
@@ -136,20 +142,32 @@ def sphere_impact(body: Any, velocity: Any, spin: Any, mu: Any, kappa: Any, surf
     return build(kind, {
         "body": body, "mu": f(mu_), "kappa": f(k), "normal": vec(n),
         "surface_velocity": vec(vs), "before": st(v, w), "after": st(v1, w1),
-        "slip_before": vec(ct), "slip_after": vec((0.0, 0.0, 0.0) if stuck else ct1),
+        **_shared(vector, cn, ct, slip1, cn1, tau0, tau_star, tau1, friction, ratio, e0, e1,
+                  loss, fraction, wcn, wct, wrn, wrt, newton, poisson, energetic, code, stuck),
+        "rebound_speed": f(speed), "rebound_angle": _ATAN2(up, along), "topspin": f(top),
+        "sidespin": f(side), "gyrospin": f(gyro),
+    })  # fmt: skip
+
+
+def _shared(vector: type, cn: float, ct: tuple, slip1: tuple, cn1: float, tau0: float,
+            tau_star: float, tau1: float, friction: tuple, ratio: float, e0: float, e1: float,
+            loss: float, fraction: float, wcn: float, wct: float, wrn: float, wrt: float,
+            newton: float, poisson: float, energetic: float, code: int,
+            stuck: bool) -> dict:  # fmt: skip
+    """The fields a sphere's and a pair's results share, as result values."""
+    f = _FLOAT
+    return {
+        "slip_before": _vec(vector, ct), "slip_after": _vec(vector, slip1),
         "normal_velocity_before": f(cn), "normal_velocity_after": f(cn1),
         "regime": REGIMES[code], "tau0": f(tau0), "tau_star": f(tau_star), "tau1": f(tau1),
-        "friction_impulse": vec(friction), "impulse_ratio": f((-f1 + 0.0) / tau1),
+        "friction_impulse": _vec(vector, friction), "impulse_ratio": f(ratio),
         "kinetic_energy_before": f(e0), "kinetic_energy_after": f(e1),
-        "dissipated_energy": f(loss), "dissipated_fraction": f(loss / e0_rel),
+        "dissipated_energy": f(loss), "dissipated_fraction": f(fraction),
         "work_compression_normal": f(wcn), "work_compression_tangential": f(wct),
         "work_restitution_normal": f(wrn), "work_restitution_tangential": f(wrt),
-        "newton_restitution": f(-cn1 / cn), "poisson_restitution": f((tau1 - tau0) / tau0),
-        "energetic_restitution": f(math.sqrt(eta2 if eta2 > 0.0 else 0.0)),
-        "rebound_speed": f(math.sqrt(dot(v1, v1))), "rebound_angle": _ATAN2(up, travel),
-        "topspin": f(top), "sidespin": f(dot(w1, n)), "gyrospin": f(gyro),
-        "grips": np.True_ if stuck else np.False_,
-    })  # fmt: skip
+        "newton_restitution": f(newton), "poisson_restitution": f(poisson),
+        "energetic_restitution": f(energetic), "grips": np.True_ if stuck else np.False_,
+    }  # fmt: skip
 
 
 def _pair_normal(normal: Any, centres: Any, touch: float) -> tuple | None:
@@ -197,55 +215,48 @@ def pair_impact(ball1: Any, ball2: Any, velocity1: Any, spin1: Any, velocity2: A
     n = _pair_normal(normal, centres, r1 + r2)
     if n is None:
         return None
-    dot, cross = law3._dot, law3._cross
-
-    def material(v: tuple, w: tuple) -> tuple:  # ball 2's material point at the contact
-        a = cross(w, (r2 * n[0], r2 * n[1], r2 * n[2]))
-        return (v[0] + a[0], v[1] + a[1], v[2] + a[2])
-
-    cn, ct, speed, e = law3.sphere_contact(v1, w1, n, r1, material(v2, w2))
+    r2n = (r2 * n[0], r2 * n[1], r2 * n[2])
+    a = law3._cross(w2, r2n)
+    cn = law3.sphere_contact(v1, w1, n, r1, (v2[0] + a[0], v2[1] + a[1], v2[2] + a[2]))[0]
     if not cn <= -SMALLEST:
         return None  # the array path says why (as solve refuses |vy| < SMALLEST)
     kind, state, vector = kinds
-    m, zeta = law3.pair_parameters(m1, j1, r1, m2, j2, r2)
-    (tau0, tau_star, tau1, f1, _, _, code, wcn, wct, wrn, wrt, loss, _, _) = law.contact_impact(
-        speed, cn, m, zeta, mu_, k
-    )
-    friction = (f1 * e[0], f1 * e[1], f1 * e[2])
-    total = (tau1 * n[0] + friction[0], tau1 * n[1] + friction[1], tau1 * n[2] + friction[2])
-    v1b = (v1[0] + total[0] / m1, v1[1] + total[1] / m1, v1[2] + total[2] / m1)
-    v2b = (v2[0] - total[0] / m2, v2[1] - total[1] / m2, v2[2] - total[2] / m2)
-    w1b = law3._spin_change(w1, n, r1, j1, friction)
-    w2b = law3._spin_change(w2, n, r2, j2, friction)
-    cn1, ct1, _, _ = law3.sphere_contact(v1b, w1b, n, r1, material(v2b, w2b))
-
-    def energy(m_: float, j: float, v: tuple, w: tuple) -> float:
-        return 0.5 * m_ * dot(v, v) + 0.5 * j * dot(w, w)
-
-    e0 = energy(m1, j1, v1, w1) + energy(m2, j2, v2, w2)
-    e1 = energy(m1, j1, v1b, w1b) + energy(m2, j2, v2b, w2b)
-    p = (m1 * v1[0] + m2 * v2[0], m1 * v1[1] + m2 * v2[1], m1 * v1[2] + m2 * v2[2])
-    e_cm = e0 - 0.5 * dot(p, p) / (m1 + m2)
-    stuck = speed <= (1.0 + k) * zeta * mu_ * abs(cn)
-    s1, s2 = math.sqrt(dot(v1b, v1b)), math.sqrt(dot(v2b, v2b))
-    sine = cross(v1b, v2b)
-    angle = _ATAN2(math.sqrt(dot(sine, sine)), dot(v1b, v2b)) if s1 > 0 and s2 > 0 else _NAN
-    eta2 = -wrn / wcn
+    (
+        cn,
+        ct,
+        v1b,
+        w1b,
+        v2b,
+        w2b,
+        slip1,
+        cn1,
+        tau0,
+        tau_star,
+        tau1,
+        friction,
+        ratio,
+        e0,
+        e1,
+        loss,
+        fraction,
+        wcn,
+        wct,
+        wrn,
+        wrt,
+        newton,
+        poisson,
+        energetic,
+        sine,
+        cosine,
+        code,
+        stuck,
+    ) = law3.pair_impact_fields(v1, w1, v2, w2, n, m1, r1, j1, m2, r2, j2, mu_, k)
     f = _FLOAT
     return build(kind, {
         "ball1": ball1, "ball2": ball2, "mu": f(mu_), "kappa": f(k), "normal": _vec(vector, n),
         "before1": _state(state, v1, w1), "before2": _state(state, v2, w2),
         "after1": _state(state, v1b, w1b), "after2": _state(state, v2b, w2b),
-        "slip_before": _vec(vector, ct),
-        "slip_after": _vec(vector, (0.0, 0.0, 0.0) if stuck else ct1),
-        "normal_velocity_before": f(cn), "normal_velocity_after": f(cn1),
-        "regime": REGIMES[code], "tau0": f(tau0), "tau_star": f(tau_star), "tau1": f(tau1),
-        "friction_impulse": _vec(vector, friction), "impulse_ratio": f((-f1 + 0.0) / tau1),
-        "kinetic_energy_before": f(e0), "kinetic_energy_after": f(e1),
-        "dissipated_energy": f(loss), "dissipated_fraction": f(loss / e_cm),
-        "work_compression_normal": f(wcn), "work_compression_tangential": f(wct),
-        "work_restitution_normal": f(wrn), "work_restitution_tangential": f(wrt),
-        "newton_restitution": f(-cn1 / cn), "poisson_restitution": f((tau1 - tau0) / tau0),
-        "energetic_restitution": f(math.sqrt(eta2 if eta2 > 0.0 else 0.0)),
-        "grips": np.True_ if stuck else np.False_, "angle_between_paths": f(angle),
+        **_shared(vector, cn, ct, slip1, cn1, tau0, tau_star, tau1, friction, ratio, e0, e1,
+                  loss, fraction, wcn, wct, wrn, wrt, newton, poisson, energetic, code, stuck),
+        "angle_between_paths": f(_ATAN2(sine, cosine)),
     })  # fmt: skip
