@@ -20,6 +20,21 @@ def test_readme_examples():
     assert result.failed == 0
 
 
+START_PAGES = sorted((ROOT / "docs" / "start").glob("*.md"))
+
+
+@pytest.mark.parametrize("path", START_PAGES, ids=lambda p: p.name)
+@pytest.mark.slow
+def test_start_pages_run(path, tmp_path, monkeypatch):
+    """Each start page's Python blocks run and print what the page shows (the figures they
+    save land in a temporary folder)."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    result = doctest.testfile(str(path), module_relative=False, optionflags=FLAGS)
+    assert result.attempted >= 8
+    assert result.failed == 0
+
+
 MODULES = sorted(
     m.name
     for m in pkgutil.walk_packages(spinimpact.__path__, "spinimpact.")
