@@ -221,15 +221,17 @@ class PlanarBatch:
             default = self.defaults.get(name)
             if name in chunk.columns:
                 values[name] = chunk_numbers(chunk, name, default, note, RULES[name])
-            else:
-                values[name] = np.full(n, np.nan if default is None else float(default))
+            else:  # one value for every row: a read-only view, no array of copies
+                value = np.float64(np.nan if default is None else float(default))
+                values[name] = np.broadcast_to(value, (n,))
         law = self._laws(chunk, note)
         self._check_approach(chunk, values, note)
         for i, message in sorted(found, key=lambda item: item[0]):
             if not messages[i]:
                 messages[i] = message
         good = messages == ""
-        if good.all() and (law == law[0]).all():  # one solve of the rows as they are
+        one_law = law.size > 0 and (law.strides[0] == 0 or (law == law[0]).all())
+        if good.all() and one_law:  # one solve of the rows as they are
             whole = self._whole(values, law)
             if whole is not None:
                 return values, whole, messages
@@ -286,7 +288,10 @@ class PlanarBatch:
             return solve_planar(body, v["vx"], v["vy"], v["omega"], **surface).columns()
 
     def _laws(self, chunk: Chunk, note: Callable[[int, str], None]) -> np.ndarray:
-        law = np.full(chunk.messages.size, self.defaults["law"], dtype=object)
+        one = np.array(self.defaults["law"], dtype=object)
+        if "law" not in chunk.columns:  # one law for every row: a read-only view
+            return np.broadcast_to(one, (chunk.messages.size,))
+        law = np.full(chunk.messages.size, one[()], dtype=object)
         if "law" in chunk.columns:
             cells = chunk.columns["law"]
             text = np.empty(cells.size, dtype=object)  # cell by cell: no fixed-width copy
