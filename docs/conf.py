@@ -49,12 +49,15 @@ html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
     "navbar_align": "left",
-    "header_links_before_dropdown": 6,
+    "header_links_before_dropdown": 4,
     "secondary_sidebar_items": ["page-toc"],
     "footer_start": ["copyright"],
     "footer_end": ["sphinx-version"],
 }
 html_show_sourcelink = False
+# The light/dark switch starts from the reader's system setting (without it the theme logs
+# an error on a reader's first visit).
+html_context = {"default_mode": "auto"}
 
 # -- MyST: the Markdown pages ----------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "amsmath", "deflist", "colon_fence"]
@@ -97,5 +100,7 @@ sphinx_gallery_conf = {
     "image_scrapers": ("matplotlib",),
     "show_memory": False,
     "min_reported_time": 1e9,
+    # The execution-times pages load a table library from a CDN; the site fetches nothing.
+    "write_computation_times": False,
 }
 os.environ.setdefault("MPLBACKEND", "Agg")
