@@ -27,7 +27,7 @@ $(BASE): pyproject.toml | $(PY)
 	touch $(BASE)
 
 $(STAMP): pyproject.toml | $(PY)
-	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax]'
+	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax,docs]'
 	touch $(STAMP)
 
 DOCS_STAMP := $(VENV)/.installed-docs
@@ -41,7 +41,7 @@ docs: $(DOCS_STAMP)  ## build the documentation site into build/docs/html (warni
 demo: $(BASE)  ## solve the documented default impact and print the report
 	$(VENV)/bin/spinimpact solve
 
-test: $(STAMP)  ## run the whole test suite (what CI runs)
+test: $(STAMP) docs  ## build the documentation site, then run the whole test suite (what CI runs)
 	$(PY) -m pytest
 
 check: $(STAMP)  ## the everyday quick subset: every test but the slow and browser ones, 25 examples a property
