@@ -97,7 +97,7 @@ sphinx_gallery_conf = {
     "remove_config_comments": True,
     "within_subsection_order": "FileNameSortKey",
     "matplotlib_animations": False,
-    "image_scrapers": ("matplotlib",),
+    "image_scrapers": ("_ext.gallery_figures.scrape_figures",),
     "show_memory": False,
     "min_reported_time": 1e9,
     # The execution-times pages load a table library from a CDN; the site fetches nothing.

@@ -6,8 +6,10 @@ The compiled contact law in your own Numba loop
 ``numba.njit`` code can call, for a time-stepping simulator or a DEM code that wants the
 exact impact at each contact. Here a loop of ``numba.njit`` bounces a ball on the ground
 ten times and records its rebound velocities, and the same bounces computed by
-:func:`spinimpact.solve` agree to rounding. Arguments of ``rebound``: the incidence
-``vx, vy, omega``, then ``mass, radius, zeta, mu, kappa``.
+:func:`spinimpact.solve` agree to rounding. The first bounce leaves the ball rolling
+(``vx = -R omega``), so friction does no more work and only the height of the bounces
+falls. Arguments of ``rebound``: the incidence ``vx, vy, omega``, then
+``mass, radius, zeta, mu, kappa``.
 """
 
 import matplotlib.pyplot as plt
