@@ -101,6 +101,7 @@ def trial(root: Path, k: int, signum: int, delay: float, expected: bytes):
 
 
 @pytest.mark.slow
+@pytest.mark.alone  # the rename slack is a time: no other test may load the cores meanwhile
 def test_a_signal_at_any_moment_stops_the_batch_or_lets_it_finish_whole(tmp_path):
     # Every numeric column of the paper's bodies, 17-digit numbers: reading the numbers
     # (where a signal used to be lost inside NumPy) is a good share of the run.

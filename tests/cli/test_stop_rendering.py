@@ -17,6 +17,7 @@ import pytest
 
 pytestmark = [
     pytest.mark.slow,
+    pytest.mark.alone,  # times the stop: no other test may load the cores meanwhile
     pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals"),
 ]
 
