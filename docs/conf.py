@@ -58,6 +58,8 @@ html_show_sourcelink = False
 # The light/dark switch starts from the reader's system setting (without it the theme logs
 # an error on a reader's first visit).
 html_context = {"default_mode": "auto"}
+# The landing and start pages stand alone: no section navigation beside them.
+html_sidebars = {"index": [], "start/*": []}
 
 # -- MyST: the Markdown pages ----------------------------------------------------------
 myst_enable_extensions = ["dollarmath", "amsmath", "deflist", "colon_fence"]

@@ -7,8 +7,8 @@ chunks of bounded memory, counting the regimes and folding a histogram on the fl
 ``spinimpact sweep`` runs). 200,000 incidences of a solid sphere without spin, ``vx``
 uniform between 0 and 3 m/s at ``vy = -1`` m/s: the regime depends on ``r = vx/|vy|``
 only, so its fractions are known in advance, ``zeta mu / 3`` for sticking in compression and
-``kappa zeta mu / 3`` in restitution; the sampled fractions agree with them to about their
-standard error.
+``kappa zeta mu / 3`` in restitution; the sampled fractions agree with them within two
+standard errors.
 """
 
 import matplotlib.pyplot as plt
