@@ -23,6 +23,33 @@ def test_readme_examples():
 START_PAGES = sorted((ROOT / "docs" / "start").glob("*.md"))
 
 
+#: The site's other pages that hold Python blocks (the start pages are run above).
+CODE_PAGES = sorted(p for p in (ROOT / "docs").glob("*.md") if "```python" in p.read_text())
+
+
+@pytest.mark.parametrize("path", CODE_PAGES, ids=lambda p: p.name)
+@pytest.mark.slow
+def test_every_python_block_of_a_page_runs(path, tmp_path, monkeypatch):
+    """Each Python block of a page runs, in the page's order, each seeing what the blocks
+    before it defined: a block of ``>>>`` examples prints what the page shows (doctest),
+    any other block runs without error. Files it writes land in a temporary folder."""
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    blocks = re.findall(r"```python\n(.*?)```", path.read_text(), re.S)
+    names: dict = {"__name__": f"docs_{path.stem}"}
+    parser, runner = doctest.DocTestParser(), doctest.DocTestRunner(optionflags=FLAGS)
+    for k, block in enumerate(blocks):
+        where = f"{path.name}, Python block {k + 1}"
+        if ">>>" not in block:
+            exec(compile(block, where, "exec"), names)  # noqa: S102 - the page's own code
+            continue
+        test = parser.get_doctest(block, names, where, str(path), 0)
+        result = runner.run(test, clear_globs=False)
+        assert result.failed == 0, where
+        names = test.globs
+    assert blocks
+
+
 @pytest.mark.parametrize("path", START_PAGES, ids=lambda p: p.name)
 @pytest.mark.slow
 def test_start_pages_run(path, tmp_path, monkeypatch):
