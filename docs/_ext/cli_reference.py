@@ -71,6 +71,56 @@ def command_lines(name: str, command: click.Command) -> list[str]:
     return lines
 
 
+def problem_lines() -> list[str]:
+    """The reST of every registered problem's inputs, as ``--problem NAME`` takes them:
+    ``sweep --problem NAME`` options (``--name`` for input ``name``) and ``--set name=...``
+    on ``batch``, ``solve``, ``report`` and ``fit``."""
+    from spinimpact import problems
+
+    title = "The inputs of each problem"
+    lines = [
+        ".. _cli-problems:",
+        "",
+        title,
+        "-" * len(title),
+        "",
+        "With ``--problem NAME``, ``spinimpact sweep`` takes each input of the problem",
+        "as an option (a value, a grid ``START:STOP:NUM`` or random ``uniform:LOW:HIGH``),",
+        "and ``batch``, ``solve``, ``report`` and ``fit`` take ``--set INPUT=VALUE``.",
+        "",
+    ]
+    for declared in problems():
+        lines += [
+            f"``--problem {declared.name}``: {declared.summary}",
+            "",
+            ".. list-table::",
+            "   :header-rows: 1",
+            "   :widths: 22 18 10 14 36",
+            "",
+            "   * - option",
+            "     - ``--set`` name",
+            "     - unit",
+            "     - default",
+            "     - meaning and rule",
+        ]
+        for each in declared.inputs:
+            flag = "--" + each.name.replace("_", "-")
+            default = (
+                "required"
+                if each.required
+                else ("" if each.default is None else f"``{each.default}``")
+            )
+            lines += [
+                f"   * - ``{flag}``",
+                f"     - ``{each.name}``",
+                f"     - {each.unit or ''}",
+                f"     - {default}",
+                f"     - {_escape(each.description)} ({_escape(each.rule_text)})",
+            ]
+        lines.append("")
+    return lines
+
+
 class CliReference(SphinxDirective):
     """Every command of the ``spinimpact`` group, in order."""
 
@@ -83,6 +133,7 @@ class CliReference(SphinxDirective):
             if getattr(command, "hidden", False):
                 continue
             lines += command_lines(name, command)
+        lines += problem_lines()
         node = nodes.section()
         node.document = self.state.document
         self.state.nested_parse(StringList(lines, "cli-reference"), 0, node)

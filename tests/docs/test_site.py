@@ -16,6 +16,7 @@ from __future__ import annotations
 import functools
 import html.parser
 import http.server
+import re
 import shutil
 import subprocess
 import sys
@@ -209,3 +210,30 @@ def test_search_finds_the_api_page_of_solve_sphere(server, browser):
     link.wait_for(timeout=30_000)
     assert "solve_sphere" in link.inner_text()
     page.close()
+
+
+def test_every_command_option_and_problem_input_is_in_the_cli_reference(site):
+    """The CLI reference names every visible option of every command, and each registered
+    problem's inputs as ``--problem NAME`` takes them."""
+    import html
+
+    import click
+
+    from spinimpact import problems
+    from spinimpact.cli import cli
+
+    text = html.unescape(re.sub(r"<[^>]+>", "", (site / "cli.html").read_text()))
+    missing = []
+    for name, command in cli.commands.items():
+        if getattr(command, "hidden", False):
+            continue
+        if f"spinimpact {name}" not in text:
+            missing.append(name)
+        for param in command.params:
+            if isinstance(param, click.Option) and not param.hidden:
+                missing += [o for o in param.opts if o not in text]
+    for declared in problems():
+        assert f"--problem {declared.name}" in text
+        missing += [f"--{i.name.replace('_', '-')}" for i in declared.inputs
+                    if f"--{i.name.replace('_', '-')}" not in text]  # fmt: skip
+    assert missing == []
