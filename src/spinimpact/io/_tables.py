@@ -29,8 +29,10 @@ __all__ = [
     "SUFFIXES",
     "BatchError",
     "Chunk",
+    "RowNotes",
     "check_header",
     "chunk_numbers",
+    "column_or_default",
     "csv_chunks",
     "file_format",
     "parquet_chunks",
@@ -282,6 +284,40 @@ def check_header(
             f"missing column {missing[0]!r}: the input needs columns {', '.join(required)} "
             f"(found {found}; is the file comma-separated?)"
         )
+
+
+class RowNotes:
+    """What is wrong with a chunk's rows, noted as it is found: ``note(i, message)``; then
+    :meth:`messages` keeps each row's first problem, in row order."""
+
+    def __init__(self) -> None:
+        self.found: list[tuple[int, str]] = []
+
+    def __call__(self, i: int, message: str) -> None:
+        self.found.append((i, message))
+
+    def messages(self, chunk: Chunk) -> np.ndarray:
+        """The chunk's reading messages, then for each row without one the first noted."""
+        out = chunk.messages.copy()
+        for i, message in sorted(self.found, key=lambda item: item[0]):
+            out[i] = out[i] or message
+        return out
+
+
+def column_or_default(
+    chunk: Chunk,
+    name: str,
+    default: Any,
+    note: Callable[[int, str], None],
+    problems: Callable[[np.ndarray], np.ndarray] | None = None,
+    required: bool = True,
+) -> np.ndarray:
+    """Column ``name`` of ``chunk`` read by :func:`chunk_numbers`, or, where the file has no
+    such column, ``default`` (NaN for ``None``) viewed for every row (read-only, no copies)."""
+    if name in chunk.columns:
+        return chunk_numbers(chunk, name, default, note, problems, required=required)
+    value = np.float64(np.nan if default is None else float(default))
+    return np.broadcast_to(value, (chunk.messages.size,))
 
 
 def chunk_numbers(

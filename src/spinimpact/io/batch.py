@@ -45,8 +45,9 @@ from ._tables import (
     SUFFIXES,
     BatchError,
     Chunk,
+    RowNotes,
     check_header,
-    chunk_numbers,
+    column_or_default,
     csv_chunks,
     file_format,
     parquet_chunks,
@@ -102,21 +103,15 @@ def _law_kappa(chunk: Chunk, law: Any, kappa: np.ndarray, note: Callable) -> Non
 
 def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
     """Solve one chunk. Returns (input numbers, results by column, error message per row)."""
-    messages = chunk.messages.copy()
-    n = messages.size
-    found: list[tuple[int, str]] = []
-
-    def note(i: int, message: str) -> None:
-        found.append((i, message))
-
-    values = {}
-    for name in NUMERIC:
-        if name in chunk.columns:
-            default = defaults.get(name)
-            values[name] = chunk_numbers(chunk, name, default, note, required=name != "gyration")
-        else:
-            default = defaults.get(name)
-            values[name] = np.full(n, np.nan if default is None else float(default))
+    n = chunk.messages.size
+    note = RowNotes()
+    values = {
+        name: column_or_default(
+            chunk, name, defaults.get(name), note, required=name != "gyration"
+        )  # fmt: skip
+        for name in NUMERIC
+    }
+    values["gyration"] = np.array(values["gyration"])  # a preset in a row clears its own
     preset = np.full(n, defaults.get("body") or "", dtype=object)
     if "body" in chunk.columns:
         given = ~chunk.empty["body"]
@@ -138,9 +133,7 @@ def _solve_chunk(chunk: Chunk, defaults: dict[str, Any]):
         what = repr(str(preset[i])) if preset[i] else "nothing (no body and no gyration)"
         note(i, f"{chunk.where(i, 'body')}: must be one of {', '.join(PRESETS)}; got {what}")
     _law_kappa(chunk, defaults.get("tangential"), values["kappa"], note)
-    for i, message in sorted(found, key=lambda item: item[0]):
-        if not messages[i]:
-            messages[i] = message
+    messages = note.messages(chunk)
     good = messages == ""
     solved: dict[str, np.ndarray] = {}
     if good.any():

@@ -37,7 +37,7 @@ import numpy as np
 from .._validation import SMALLEST, row_problems, rule_problems, validated
 from ..model.planar import LAWS, PendulumImpact, PlanarImpact, solve_pendulum, solve_planar
 from ..model.planar_body import Pendulum, PlanarBody
-from ._tables import BatchError, Chunk, check_header, chunk_numbers
+from ._tables import BatchError, Chunk, RowNotes, check_header, column_or_default
 
 __all__ = ["GEOMETRY", "INCIDENCE", "SETTINGS", "PlanarBatch", "body_kind"]
 
@@ -209,26 +209,15 @@ class PlanarBatch:
 
     def solve(self, chunk: Chunk) -> tuple[dict, dict, np.ndarray]:
         """Solve one chunk: (input numbers, output columns, error message per row)."""
-        messages = chunk.messages.copy()
-        n = messages.size
-        found: list[tuple[int, str]] = []
-
-        def note(i: int, message: str) -> None:
-            found.append((i, message))
-
-        values = {}
-        for name in self.inputs:
-            default = self.defaults.get(name)
-            if name in chunk.columns:
-                values[name] = chunk_numbers(chunk, name, default, note, RULES[name])
-            else:  # one value for every row: a read-only view, no array of copies
-                value = np.float64(np.nan if default is None else float(default))
-                values[name] = np.broadcast_to(value, (n,))
+        n = chunk.messages.size
+        note = RowNotes()
+        values = {
+            name: column_or_default(chunk, name, self.defaults.get(name), note, RULES[name])
+            for name in self.inputs
+        }
         law = self._laws(chunk, note)
         self._check_approach(chunk, values, note)
-        for i, message in sorted(found, key=lambda item: item[0]):
-            if not messages[i]:
-                messages[i] = message
+        messages = note.messages(chunk)
         good = messages == ""
         one_law = law.size > 0 and (law.strides[0] == 0 or (law == law[0]).all())
         if good.all() and one_law:  # one solve of the rows as they are

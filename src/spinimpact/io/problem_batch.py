@@ -28,7 +28,7 @@ import numpy as np
 
 from ..model.registry import Problem, detect, problems
 from ..model.registry import problem as get_problem
-from ._tables import BatchError, Chunk, check_header, chunk_numbers
+from ._tables import BatchError, Chunk, RowNotes, check_header, column_or_default
 from .planar_batch import body_kind
 
 __all__ = ["ProblemBatch", "TWO_D", "problem_of", "result_kinds", "units_file", "write_units"]
@@ -192,27 +192,17 @@ class ProblemBatch:
     def solve(self, chunk: Chunk) -> tuple[dict, dict, np.ndarray]:
         """Solve one chunk: (input numbers, output columns, error message per row)."""
         n = chunk.messages.size
-        found: list[tuple[int, str]] = []
-
-        def note(i: int, message: str) -> None:
-            found.append((i, message))
-
+        note = RowNotes()
         values: dict[str, np.ndarray] = {}
         for each in self.problem.inputs:
             default = self.defaults.get(each.name)
             if each.text:
                 values[each.name] = self._names(chunk, each, default, note)
-            elif each.name in chunk.columns:
-                values[each.name] = chunk_numbers(
-                    chunk, each.name, default, note, each.problems, required=not each.optional
-                )
-            else:  # one value for every row: a read-only view, no array of copies
-                value = np.float64(np.nan if default is None else float(default))
-                values[each.name] = np.broadcast_to(value, (n,))
+            else:
+                values[each.name] = column_or_default(chunk, each.name, default, note,
+                                                      each.problems, not each.optional)  # fmt: skip
         self._presets(chunk, values, note)
-        messages = chunk.messages.copy()
-        for i, message in sorted(found, key=lambda item: item[0]):
-            messages[i] = messages[i] or message
+        messages = note.messages(chunk)
         numeric = {k: v for k, v in values.items() if k in self.numeric}
         if (messages == "").all():  # every row read well: solve them as they are, no copies
             whole = self._whole(values)
