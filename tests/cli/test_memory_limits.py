@@ -57,3 +57,25 @@ def test_a_chunk_too_large_for_the_limit_is_refused_naming_chunk_size(tmp_path):
     assert "lower --chunk-size" in out.stderr
     assert (tmp_path / "out.csv").read_bytes() == OLD
     assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "out.csv"]
+
+
+@pytest.mark.parametrize(
+    ("error", "out_of_memory"),
+    [
+        (OSError("/x/workqueue.so: failed to map segment from shared object"), True),
+        (ImportError("libfoo.so: failed to map segment from shared object"), True),
+        (OSError(12, "Cannot allocate memory"), True),
+        (OSError(2, "No such file or directory"), False),
+    ],
+)
+def test_a_library_that_cannot_be_mapped_is_out_of_memory(monkeypatch, capsys, error,
+                                                          out_of_memory):  # fmt: skip
+    from spinimpact.cli._common import errors_to_exit_2
+
+    monkeypatch.setattr("sys.argv", ["spinimpact", "batch", "in.csv"])
+    with pytest.raises(SystemExit) as stop, errors_to_exit_2():
+        raise error
+    assert stop.value.code == 2
+    message = capsys.readouterr().err
+    assert message.startswith("spinimpact: error: out of memory (") == out_of_memory
+    assert ("lower --chunk-size" in message) == out_of_memory

@@ -252,6 +252,10 @@ MEMORY_OPTIONS = {
 }
 
 
+#: What the system says when a shared library cannot be mapped for want of address space.
+_NO_ROOM = ("failed to map segment from shared object", "Cannot allocate memory")
+
+
 def _memory_advice() -> str:
     """What to lower when the command that ran (read from the command line) runs out of
     memory."""
@@ -275,7 +279,9 @@ def errors_to_exit_2() -> Iterator[None]:
       optional package (``ImportError``, whose message names the extra to
       install) and a file that cannot be read or written (``OSError``) print
       ``spinimpact: error: MESSAGE`` and exit with status 2, without a traceback;
-    * running out of memory (``MemoryError``, or a thread that cannot start) prints one
+    * running out of memory (``MemoryError``, a thread that cannot start, or a compiled
+      library that cannot be mapped into the address space, as Numba's thread pool under
+      ``ulimit -v``) prints one
       line naming the option that bounds the command's memory
       (:data:`MEMORY_OPTIONS`), exit status 2;
     * a stop by a signal (:class:`~spinimpact.io._stop.Stopped`: Ctrl-C, SIGTERM)
@@ -294,6 +300,10 @@ def errors_to_exit_2() -> Iterator[None]:
             yield
         except RuntimeError as exc:  # a thread pool that cannot start is out of memory
             if "can't start new thread" not in str(exc):
+                raise
+            raise MemoryError(str(exc)) from None
+        except (OSError, ImportError) as exc:  # a library that cannot be mapped: no memory
+            if not any(text in str(exc) for text in _NO_ROOM):
                 raise
             raise MemoryError(str(exc)) from None
     except MemoryError as exc:
