@@ -159,8 +159,10 @@ def test_a_killed_runs_temporary_is_removed_by_the_next_run(tmp_path):
         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
     ) as proc:  # fmt: skip
         deadline = time.monotonic() + 60
-        while not [p for p in tmp_path.iterdir() if TEMPORARY_TAG in p.name]:
-            assert proc.poll() is None and time.monotonic() < deadline, "no temporary seen"
+        # both temporaries (the CSV's and its units file's) are made one after the other:
+        # the kill comes once both are there, whatever the machine's load
+        while len([p for p in tmp_path.iterdir() if TEMPORARY_TAG in p.name]) < 2:
+            assert proc.poll() is None and time.monotonic() < deadline, "no temporaries seen"
             time.sleep(0.01)
         proc.kill()  # SIGKILL: nothing can clean up in the process itself
     left = sorted(p.name for p in tmp_path.iterdir() if p.name.startswith("."))
