@@ -99,38 +99,10 @@ def sphere_impact(body: Any, velocity: Any, spin: Any, mu: Any, kappa: Any, surf
     cn = law3.sphere_contact(v, w, n, radius, vs)[0]
     if not cn <= -SMALLEST:
         return None  # the array path says why (as solve refuses |vy| < SMALLEST)
-    (
-        cn,
-        ct,
-        v1,
-        w1,
-        slip1,
-        cn1,
-        tau0,
-        tau_star,
-        tau1,
-        friction,
-        ratio,
-        e0,
-        e1,
-        loss,
-        fraction,
-        wcn,
-        wct,
-        wrn,
-        wrt,
-        newton,
-        poisson,
-        energetic,
-        speed,
-        up,
-        along,
-        top,
-        side,
-        gyro,
-        code,
-        stuck,
-    ) = law3.sphere_impact_fields(v, w, n, vs, m, radius, body.inertia, zeta, mu_, k)
+    (cn, ct, v1, w1, slip1, cn1, tau0, tau_star, tau1, friction, ratio, e0, e1, loss, fraction,
+     wcn, wct, wrn, wrt, newton, poisson, energetic, speed, up, along, top, side, gyro, code,
+     stuck) = law3.sphere_impact_fields(v, w, n, vs, m, radius, body.inertia, zeta, mu_,
+                                        k)  # fmt: skip
     f = _FLOAT
 
     def vec(a: tuple) -> Any:
@@ -221,36 +193,10 @@ def pair_impact(ball1: Any, ball2: Any, velocity1: Any, spin1: Any, velocity2: A
     if not cn <= -SMALLEST:
         return None  # the array path says why (as solve refuses |vy| < SMALLEST)
     kind, state, vector = kinds
-    (
-        cn,
-        ct,
-        v1b,
-        w1b,
-        v2b,
-        w2b,
-        slip1,
-        cn1,
-        tau0,
-        tau_star,
-        tau1,
-        friction,
-        ratio,
-        e0,
-        e1,
-        loss,
-        fraction,
-        wcn,
-        wct,
-        wrn,
-        wrt,
-        newton,
-        poisson,
-        energetic,
-        sine,
-        cosine,
-        code,
-        stuck,
-    ) = law3.pair_impact_fields(v1, w1, v2, w2, n, m1, r1, j1, m2, r2, j2, mu_, k)
+    (cn, ct, v1b, w1b, v2b, w2b, slip1, cn1, tau0, tau_star, tau1, friction, ratio, e0, e1,
+     loss, fraction, wcn, wct, wrn, wrt, newton, poisson, energetic, sine, cosine, code,
+     stuck) = law3.pair_impact_fields(v1, w1, v2, w2, n, m1, r1, j1, m2, r2, j2, mu_,
+                                      k)  # fmt: skip
     f = _FLOAT
     return build(kind, {
         "ball1": ball1, "ball2": ball2, "mu": f(mu_), "kappa": f(k), "normal": _vec(vector, n),
