@@ -5,8 +5,6 @@ runs removed; `--fields` and `-` for standard input and output."""
 import csv
 import io
 import os
-import resource
-import signal
 import subprocess
 import sys
 import textwrap
@@ -18,6 +16,8 @@ import pytest
 from spinimpact.cli import main
 from spinimpact.io.atomic import TEMPORARY_TAG
 from spinimpact.io.batch import result_columns
+
+from tests.limits import under_limits
 
 HAS_FULL = os.path.exists("/dev/full")
 
@@ -58,19 +58,15 @@ def test_a_full_standard_output_leaves_the_old_output(tmp_path, command):
     assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
 
 
-def _limit_file_size():
-    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # a write past the limit fails (EFBIG)
-    resource.setrlimit(resource.RLIMIT_FSIZE, (20_000, 20_000))
-
-
 @pytest.mark.slow
 def test_a_write_that_fails_part_way_leaves_the_old_output(tmp_path):
     keep = tmp_path / "keep.csv"
     keep.write_text("old")
-    run = spinimpact(
-        "batch", incidences(tmp_path / "in.csv", 2000), "--output", keep,
-        preexec_fn=_limit_file_size,
-    )  # fmt: skip
+    command = [sys.executable, "-m", "spinimpact", "batch", incidences(tmp_path / "in.csv", 2000),
+               "--output", keep]  # fmt: skip
+    # files of at most 20,000 bytes; SIGXFSZ ignored, so a write past that fails (EFBIG)
+    command = under_limits(command, ignore=["SIGXFSZ"], RLIMIT_FSIZE=20_000)
+    run = subprocess.run(command, capture_output=True, text=True, timeout=120)
     assert "File too large" in one_error_line(run)
     assert keep.read_text() == "old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["in.csv", "keep.csv"]

@@ -14,6 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from tests.limits import under_limits
+
 pytestmark = [
     pytest.mark.slow,
     pytest.mark.skipif(sys.platform != "linux", reason="RLIMIT_AS as Linux counts it"),
@@ -23,15 +25,6 @@ MiB = 2**20
 OLD = b"old output the user keeps\n"
 
 
-def limited(limit: int):
-    def preexec() -> None:
-        import resource
-
-        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-
-    return preexec
-
-
 def batch(folder: Path, rows: int, limit: int, *args: str) -> subprocess.CompletedProcess:
     rng = np.random.default_rng(1)
     cells = np.column_stack([rng.uniform(-5, 5, rows), rng.uniform(-5, -0.1, rows),
@@ -39,8 +32,8 @@ def batch(folder: Path, rows: int, limit: int, *args: str) -> subprocess.Complet
     np.savetxt(folder / "in.csv", cells, delimiter=",", header="vx,vy,omega", comments="")
     (folder / "out.csv").write_bytes(OLD)
     command = [sys.executable, "-m", "spinimpact", "batch", "in.csv", "--output", "out.csv"]
-    return subprocess.run([*command, *args], cwd=folder, capture_output=True, text=True,
-                          preexec_fn=limited(limit), timeout=300)  # fmt: skip
+    return subprocess.run(under_limits([*command, *args], RLIMIT_AS=limit), cwd=folder,
+                          capture_output=True, text=True, timeout=300)  # fmt: skip
 
 
 def test_a_small_batch_runs_under_800_mib_of_address_space(tmp_path):

@@ -4,7 +4,6 @@ options."""
 
 import math
 import os
-import resource
 import struct
 import subprocess
 import sys
@@ -17,23 +16,17 @@ from spinimpact import Body, solve
 from spinimpact.cli import pictures
 from spinimpact.viz import maps
 
+from tests.limits import under_limits
+
 pytest.importorskip("matplotlib")
 
 
 def run(*args, limit=None):
     env = os.environ | {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
-
-    def cap():  # an address-space limit for the child: MemoryError beyond it
-        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
-
-    return subprocess.run(
-        [sys.executable, "-m", "spinimpact", *args],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        env=env,
-        preexec_fn=cap if limit else None,
-    )
+    command = [sys.executable, "-m", "spinimpact", *args]
+    if limit:  # an address-space limit for the child: MemoryError beyond it
+        command = under_limits(command, RLIMIT_AS=limit)
+    return subprocess.run(command, capture_output=True, text=True, timeout=300, env=env)
 
 
 def png_size(path):

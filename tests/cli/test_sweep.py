@@ -11,11 +11,15 @@ import pytest
 from spinimpact import Body
 from spinimpact.io.sweep import Sweep, parse_axis, run_sweep
 
+from tests.limits import under_limits
 
-def sweep(*args, timeout=120, **kwargs):
-    """``spinimpact sweep ARGS`` in a fresh interpreter: the CompletedProcess."""
+
+def sweep(*args, timeout=120, gib=None, **kwargs):
+    """``spinimpact sweep ARGS`` in a fresh interpreter (under an address-space limit of
+    ``gib`` GiB, as ``ulimit -v``, if given): the CompletedProcess."""
+    command = [sys.executable, "-m", "spinimpact", "sweep", *map(str, args)]
     return subprocess.run(
-        [sys.executable, "-m", "spinimpact", "sweep", *map(str, args)],
+        command if gib is None else under_limits(command, RLIMIT_AS=int(gib * 2**30)),
         capture_output=True,
         text=True,
         timeout=timeout,
@@ -114,32 +118,20 @@ def test_sweeps_too_long_or_too_large_are_refused_in_one_line():
     assert "TiB of memory" in out.stderr and "--force" in out.stderr
 
 
-def limited(gib):
-    """Run the child under an address-space limit of ``gib`` GiB (as ``ulimit -v``)."""
-
-    def limit():
-        import resource
-
-        size = int(gib * 2**30)
-        resource.setrlimit(resource.RLIMIT_AS, (size, size))
-
-    return limit
-
-
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc")
 @pytest.mark.slow
 def test_memory_is_checked_against_the_address_space_limit_and_never_a_traceback():
     # 1e8 points a chunk: about 6 GiB, more than the 3 GiB the child may map (where more is
     # available, the address-space limit alone refuses it)
     args = ("--vx", "uniform:-5:5", "--samples", 10**8, "--chunk-size", 10**8)
-    out = sweep(*args, preexec_fn=limited(3))
+    out = sweep(*args, gib=3)
     assert_one_line_error(out, "a chunk of 100,000,000 points needs about")
     # --force runs it anyway: the allocation fails, and says so in one line
-    out = sweep(*args[:-2], "--chunk-size", 10**12, "--force", preexec_fn=limited(3))
+    out = sweep(*args[:-2], "--chunk-size", 10**12, "--force", gib=3)
     assert_one_line_error(out, "out of memory (Unable to allocate")
     assert "lower --chunk-size" in out.stderr and "Traceback" not in out.stderr
     out = sweep("--vx", "-5:5:10000000000", "--omega", "0", "--chunk-size", 10**10, "--force",
-                preexec_fn=limited(3))  # fmt: skip
+                gib=3)  # fmt: skip
     assert_one_line_error(out, "out of memory")
 
 
