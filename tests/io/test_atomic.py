@@ -1,6 +1,7 @@
 """Atomic outputs: named, locked temporaries that the next run removes after a kill;
 renames that wait for the whole command; links and permissions handled as ``cp`` would."""
 
+import ctypes
 import errno
 import os
 import shutil
@@ -189,6 +190,26 @@ def test_a_signal_outside_any_output_stops_at_once():
         signal.raise_signal(signal.SIGINT)
         pytest.fail("not stopped")  # pragma: no cover
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored
+
+
+def test_a_signal_inside_a_callback_from_compiled_code_stops_once_back(capfd):
+    # llvmlite calls back into Python while Numba compiles; an exception raised there is
+    # printed and swallowed by ctypes. The stop must wait until the callback has returned.
+    where = {"__name__": "llvmlite.binding.callback", "signal": signal}
+    exec("def notify():\n    signal.raise_signal(signal.SIGINT)\n", where)
+    callback = ctypes.CFUNCTYPE(None)(where["notify"])
+    returned = False
+    with _stop.stop_on_signals(), pytest.raises(_stop.Stopped) as stopped:
+        callback()  # through C, as compiled code calls it
+        returned = True
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline:  # the retry comes 20 ms later
+            time.sleep(0.001)
+        pytest.fail("not stopped after the callback returned")  # pragma: no cover
+    assert returned
+    assert stopped.value.signum == signal.SIGINT
+    assert capfd.readouterr().err == ""  # nothing swallowed and printed
+    assert signal.getsignal(signal.SIGALRM) is signal.SIG_DFL  # restored
 
 
 def test_writes_through_a_link_onto_its_target(tmp_path):

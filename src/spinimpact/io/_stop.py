@@ -11,6 +11,12 @@ place), so the clean-up in ``finally`` runs undisturbed. A second signal during 
 critical section raises at once (the way out of a blocked read); the temporary it
 may leave is removed by the next run (:mod:`spinimpact.io.atomic`).
 
+A signal that arrives while Python code runs as a callback from compiled code (llvmlite
+calls back into Python while Numba compiles a kernel) cannot raise there: ctypes prints
+the exception and swallows it. The handler then only records the signal and asks for it
+again 20 ms later (``SIGALRM``, :func:`signal.setitimer`), until the program is back in
+code where the exception propagates.
+
 Once the outermost :func:`~spinimpact.io.atomic.atomic_outputs` has renamed every output
 into place (:func:`finished`), a signal no longer says "no output was changed": the process
 exits at once with 128 + the signal's number, one line on stderr saying the command had
@@ -38,6 +44,7 @@ from typing import Any
 __all__ = ["Stopped", "check", "critical", "finished", "stop_on_signals"]
 
 _SIGNALS = tuple(getattr(signal, n) for n in ("SIGINT", "SIGTERM") if hasattr(signal, n))
+_ALARM = (signal.SIGALRM,) if hasattr(signal, "setitimer") and hasattr(signal, "SIGALRM") else ()
 
 
 class Stopped(BaseException):  # noqa: N818 (like KeyboardInterrupt: not an error of the input)
@@ -58,6 +65,11 @@ class _State:
     finished = False  # every output is in place: a signal now exits at once (finished())
     exiting = False  # the block of stop_on_signals(keep=True) has ended: the process ends next
     installed = False  # stop_on_signals' handlers are in place
+    deferred = False  # a Stopped is owed: it came inside a callback from compiled code
+
+
+_RETRY_S = 0.02  # how soon a deferred Stopped is tried again
+_CALLBACK_MODULES = ("llvmlite.", "ctypes.")  # Python code that compiled code calls back
 
 
 _state = _State()
@@ -122,15 +134,45 @@ def _skip_teardown() -> None:
     os._exit(0)
 
 
-def _handler(signum: int, _frame: Any) -> None:
+def _in_callback(frame: Any) -> bool:
+    """Whether ``frame`` or a frame below it runs in a module that compiled code calls
+    back (an exception raised there is swallowed, not propagated)."""
+    while frame is not None:
+        if frame.f_globals.get("__name__", "").startswith(_CALLBACK_MODULES):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _raise(frame: Any) -> None:
+    """Raise the owed :class:`Stopped` now, or, inside a callback from compiled code,
+    record that it is owed and try again shortly."""
+    if _in_callback(frame):
+        _state.deferred = True
+        if hasattr(signal, "setitimer"):
+            signal.setitimer(signal.ITIMER_REAL, _RETRY_S)
+        return
+    _state.deferred = False
+    _state.raised = True
+    raise Stopped(_state.signum)
+
+
+def _retry(_signum: int, frame: Any) -> None:
+    """SIGALRM: raise a :class:`Stopped` that a callback from compiled code deferred."""
+    if _state.finished or _state.exiting:
+        _exit(_state.signum)
+    if _state.deferred and not _state.raised:
+        _raise(frame)
+
+
+def _handler(signum: int, frame: Any) -> None:
     if _state.finished or _state.exiting:
         _exit(signum)
     second = bool(_state.signum)
     if not second:
         _state.signum = signum
     if not _state.raised and (_state.depth == 0 or second):
-        _state.raised = True
-        raise Stopped(_state.signum)
+        _raise(frame)
 
 
 @contextlib.contextmanager
@@ -148,11 +190,13 @@ def stop_on_signals(*, keep: bool = False) -> Iterator[None]:
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous = {s: signal.getsignal(s) for s in _SIGNALS}
+    previous = {s: signal.getsignal(s) for s in (*_SIGNALS, *_ALARM)}
     _state.signum, _state.raised, _state.depth, _state.finished = 0, False, 0, False
-    _state.exiting = False
+    _state.exiting = _state.deferred = False
     for s in _SIGNALS:
         signal.signal(s, _handler)
+    for s in _ALARM:
+        signal.signal(s, _retry)
     _state.installed = True
     if keep:  # registered first, so it runs after the handlers the run's imports register
         atexit.register(_skip_teardown)
@@ -162,6 +206,9 @@ def stop_on_signals(*, keep: bool = False) -> Iterator[None]:
         _state.exiting = keep
         if not keep:
             _state.installed = False
+            if _ALARM:
+                signal.setitimer(signal.ITIMER_REAL, 0)  # no retry outlives the block
             for s, handler in previous.items():
                 signal.signal(s, handler)
             _state.signum, _state.raised, _state.finished = 0, False, False
+            _state.deferred = False
