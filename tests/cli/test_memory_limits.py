@@ -38,9 +38,12 @@ def batch(folder: Path, rows: int, limit: int, *args: str) -> subprocess.Complet
 
 @pytest.fixture(scope="module", autouse=True)
 def compiled(tmp_path_factory):
-    """A batch without a limit first: Numba compiles its kernels (and caches them on disk)
-    outside the limit. LLVM compiling under a tight limit can abort the process, which no
-    handler can catch; a user meets the limit with kernels already compiled."""
+    """Every kernel and a batch without a limit first: Numba compiles its kernels (and caches
+    them on disk) outside the limit. LLVM compiling under a tight limit can abort the
+    process, which no handler can catch; a user meets the limit with kernels already
+    compiled (under a limit, a command loads them all before it reads any data)."""
+    load = "from spinimpact.core.preload import load_kernels; load_kernels()"
+    subprocess.run([sys.executable, "-c", load], capture_output=True, check=True, timeout=600)
     folder = tmp_path_factory.mktemp("compile")
     rng = np.random.default_rng(2)
     cells = np.column_stack([rng.uniform(-5, 5, 50), rng.uniform(-5, -0.1, 50),
@@ -86,3 +89,39 @@ def test_a_library_that_cannot_be_mapped_is_out_of_memory(monkeypatch, capsys, e
     message = capsys.readouterr().err
     assert message.startswith("spinimpact: error: out of memory (") == out_of_memory
     assert ("lower --chunk-size" in message) == out_of_memory
+
+
+def test_under_a_limit_numbas_threads_start_at_import():
+    # Numba's default threading layer ignores a worker thread that fails to start, and its
+    # first parallel call then waits for it forever: a batch that reached that call with a
+    # large chunk in memory hung. Under a limit the threads start when spinimpact imports.
+    pytest.importorskip("numba")
+    probe = ("import spinimpact.core.fused as f, numba.np.ufunc.parallel as p; "
+             "print(f.HAVE_NUMBA, p._is_initialized)")  # fmt: skip
+    limited = subprocess.run(under_limits([sys.executable, "-c", probe], RLIMIT_AS=800 * MiB),
+                             capture_output=True, text=True, timeout=120)  # fmt: skip
+    assert limited.stdout.split() == ["True", "True"], limited.stderr
+    free = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True,
+                          timeout=120)  # fmt: skip
+    assert free.stdout.split() == ["True", "False"], free.stderr  # no limit: started lazily
+
+
+@pytest.mark.parametrize("limited", [True, False])
+def test_a_call_that_failed_without_an_exception_is_out_of_memory_under_a_limit(
+    monkeypatch, capsys, limited
+):
+    # Under ulimit -v, Python may find no room even for the MemoryError's traceback: the
+    # call then "returned NULL without setting an exception" (a SystemError).
+    from spinimpact.cli._common import errors_to_exit_2
+
+    monkeypatch.setattr("spinimpact._limits.address_limit", lambda: 600 * MiB if limited else None)
+    monkeypatch.setattr("sys.argv", ["spinimpact", "batch", "in.csv"])
+    error = SystemError("<function f at 0x1> returned NULL without setting an exception")
+    if not limited:  # without a limit it is a bug, and keeps its traceback
+        with pytest.raises(SystemError), errors_to_exit_2():
+            raise error
+        return
+    with pytest.raises(SystemExit) as stop, errors_to_exit_2():
+        raise error
+    assert stop.value.code == 2
+    assert capsys.readouterr().err.startswith("spinimpact: error: out of memory (")

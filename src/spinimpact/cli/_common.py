@@ -213,9 +213,15 @@ def announce(estimate: Any) -> None:
 @contextmanager
 def long_run() -> Iterator[None]:
     """Refuse a run estimated over an hour (:class:`spinimpact._long.TooLong`) in one line
-    naming ``--force``, the command line's way to force it."""
+    naming ``--force``, the command line's way to force it. Under an address-space limit
+    (``ulimit -v``) the compiled kernels are loaded first (:mod:`spinimpact.core.preload`)."""
+    from .._limits import address_limit
     from .._long import TooLong
 
+    if address_limit() is not None:
+        from ..core.preload import load_kernels
+
+        load_kernels()
     try:
         yield
     except TooLong as exc:
@@ -279,9 +285,10 @@ def errors_to_exit_2() -> Iterator[None]:
       optional package (``ImportError``, whose message names the extra to
       install) and a file that cannot be read or written (``OSError``) print
       ``spinimpact: error: MESSAGE`` and exit with status 2, without a traceback;
-    * running out of memory (``MemoryError``, a thread that cannot start, or a compiled
+    * running out of memory (``MemoryError``, a thread that cannot start, a compiled
       library that cannot be mapped into the address space, as Numba's thread pool under
-      ``ulimit -v``) prints one
+      ``ulimit -v``, or under such a limit a call that failed without an exception, as
+      Python's does when even the ``MemoryError`` finds no room) prints one
       line naming the option that bounds the command's memory
       (:data:`MEMORY_OPTIONS`), exit status 2;
     * a stop by a signal (:class:`~spinimpact.io._stop.Stopped`: Ctrl-C, SIGTERM)
@@ -306,6 +313,12 @@ def errors_to_exit_2() -> Iterator[None]:
             if not any(text in str(exc) for text in _NO_ROOM):
                 raise
             raise MemoryError(str(exc)) from None
+        except SystemError as exc:  # under ulimit -v: the MemoryError itself had no room
+            from .._limits import address_limit
+
+            if address_limit() is None or "without setting an exception" not in str(exc):
+                raise
+            raise MemoryError("a call failed with no room left to say why") from None
     except MemoryError as exc:
         _fail(f"out of memory ({str(exc) or 'MemoryError'}): {_memory_advice()}")
     except Stopped as exc:

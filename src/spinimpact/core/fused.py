@@ -24,6 +24,7 @@ import math
 
 import numpy as np
 
+from .._limits import address_limit
 from .._validation import require
 from .kinematics import rebound as _rebound_numpy
 from .scalar import rebound as _scalar_rebound
@@ -39,6 +40,26 @@ except ImportError as err:  # pragma: no cover
     numba = None
     HAVE_NUMBA = False
     _NUMBA_ERROR = err
+
+
+def _start_thread_pool() -> None:
+    """Start Numba's worker threads now, while the process holds little memory.
+
+    Numba starts them on the first parallel call, and its default threading layer ignores a
+    thread that fails to start: the call then waits forever for it. Under an address-space
+    limit a batch reaches that first call with most of the limit in use (a chunk read), and
+    a thread's stack no longer fits; started at import, they do.
+    """
+    try:
+        from numba.np.ufunc import parallel
+
+        parallel._launch_threads()
+    except Exception:  # noqa: BLE001 - the first parallel call meets (and reports) it again
+        pass
+
+
+if HAVE_NUMBA and address_limit() is not None:
+    _start_thread_pool()
 
 
 def _njit(function, *, parallel=True):
