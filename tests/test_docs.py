@@ -2,8 +2,13 @@
 
 import doctest
 import importlib
+import math
+import os
 import pkgutil
 import re
+import shlex
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -273,6 +278,268 @@ def test_equation_map_names_functions_that_exist():
         else:
             missing.append(name)
     assert missing == []
+
+
+# --- Every other code block runs too ----------------------------------------------------
+#
+# The Python blocks run above. A shell block (```console, ```bash, ```sh, ```shell) holds
+# commands, one a line (a trailing backslash continues it, `#` starts a comment); written
+# with prompts (`$ spinimpact ...`), the lines after a command are the output it prints. A
+# ```text block right after a shell block is output of that block's last command. Each
+# `spinimpact ...` and `python -m ...` command runs in a temporary folder, with the input
+# files the page describes, and must exit with status 0 and print the output shown. A
+# `make` command builds the environment, the site or the figures and is not run here: each
+# one is listed in NOT_RUN with the reason. MyST directives (```{toctree}) are not code.
+# Any other block, or a command with no rule, fails `test_every_code_block_has_a_rule`.
+
+SHELL = {"console", "bash", "sh", "shell", "shell-session"}
+
+#: The commands the pages show that are not run here, and why (each is a Makefile target).
+NOT_RUN = {
+    "make demo": "creates .venv and installs the package: the environment these tests run in",
+    "make test": "builds the site and runs the whole suite, this test among them",
+    "make images": "redraws every figure of the site, engines included (minutes)",
+    "make images IMAGES=docs/images": "the same, rewriting the figures the repository tracks",
+    "make validation": "every model against every benchmark (minutes); "
+    "tests/test_validation.py checks what it prints",
+}
+
+PAGES = sorted([*MARKDOWN, *START_PAGES])
+_OPEN = re.compile(r"^ {0,3}(`{3,}|~{3,})\s*([^`\s]*)")
+
+
+def fenced_blocks(text):
+    """The fenced code blocks of Markdown ``text``, as ``(line, info, body)``."""
+    blocks, lines, k = [], text.splitlines(), 0
+    while k < len(lines):
+        match = _OPEN.match(lines[k])
+        if not match:
+            k += 1
+            continue
+        fence, info, start = match.group(1), match.group(2), k
+        k += 1
+        while k < len(lines) and not re.fullmatch(
+            rf" {{0,3}}{re.escape(fence[0])}{{{len(fence)},}}\s*", lines[k]
+        ):
+            k += 1
+        blocks.append((start + 1, info, "\n".join(lines[start + 1 : k])))
+        k += 1
+    return blocks
+
+
+def shell_commands(body):
+    """The commands of a shell block, each as ``(command, output lines it shows)``."""
+    lines = body.splitlines()
+    prompted = any(line.startswith("$ ") for line in lines)
+    found, k = [], 0
+    while k < len(lines):
+        line = lines[k]
+        k += 1
+        if prompted and not line.startswith("$ "):
+            if found:
+                found[-1][1].append(line)
+            continue
+        command = line[2:] if prompted else line
+        while command.rstrip().endswith("\\") and k < len(lines):
+            command = command.rstrip()[:-1] + " " + lines[k].strip()
+            k += 1
+        words = shlex.split(command, comments=True)
+        if words:
+            found.append((" ".join(words), []))
+    return found
+
+
+def argv_of(command):
+    """The process that runs ``command`` here, or None for a command with no rule."""
+    words = shlex.split(command)
+    if words[0] in ("spinimpact", ".venv/bin/spinimpact"):
+        return [sys.executable, "-m", "spinimpact", *words[1:]]
+    if words[0] in ("python", "python3", ".venv/bin/python") and words[1:2] == ["-m"]:
+        return [sys.executable, *words[1:]]
+    return None
+
+
+def code_blocks(path):
+    """Every fenced block of ``path`` with its rule: ``(where, rule, commands)``.
+
+    The rule is "python", "directive", "shell", "output" (a text block after a shell
+    block), or "no rule" with the reason; ``commands`` are a shell block's commands (its
+    output lines, and a following text block's, attached)."""
+    found = []
+    for line, info, body in fenced_blocks(path.read_text(encoding="utf-8")):
+        where = f"{_rel(path) if path.is_relative_to(ROOT) else path.name}:{line}"
+        if info == "python":
+            found.append((where, "python", []))
+        elif info.startswith("{") and info.endswith("}"):
+            found.append((where, "directive", []))
+        elif info in SHELL:
+            commands = shell_commands(body)
+            unknown = [c for c, _ in commands if argv_of(c) is None and c not in NOT_RUN]
+            rule = f"no rule: commands {unknown}" if unknown or not commands else "shell"
+            found.append((where, rule, commands))
+        elif info == "text" and found and found[-1][1] == "shell":
+            found[-1][2][-1][1].extend(body.splitlines())
+            found.append((where, "output", []))
+        else:
+            found.append((where, f"no rule: a ```{info} block", []))
+    return found
+
+
+def test_every_code_block_has_a_rule():
+    """No page holds a block that nothing runs: a new kind of block, or a new command
+    that is neither runnable here nor listed in NOT_RUN, fails until it has a rule."""
+    lost = [
+        f"{where}: {rule}"
+        for path in PAGES
+        for where, rule, _ in code_blocks(path)
+        if rule.startswith("no rule")
+    ]
+    assert lost == []
+
+
+def test_the_commands_not_run_are_on_the_pages_and_in_the_makefile():
+    """NOT_RUN lists no command the pages no longer show, and each is a Makefile target."""
+    shown = {
+        command
+        for path in PAGES
+        for _, rule, commands in code_blocks(path)
+        if rule == "shell"
+        for command, _ in commands
+    }
+    assert sorted(set(NOT_RUN) - shown) == []
+    targets = re.findall(r"^([\w-]+):", (ROOT / "Makefile").read_text(), re.M)
+    assert all(command.split()[1] in targets for command in NOT_RUN)
+
+
+def _paper_bounces(path):
+    """docs/fitting.md's first example as the file `spinimpact fit bounces.csv` reads: 40
+    bounces of a 58 g solid ball, the rebound with noise, the spin of every fourth missing."""
+    import numpy as np
+
+    ball = spinimpact.Body.solid_sphere(mass=0.058, radius=0.033)
+    rng = np.random.default_rng(1)
+    vy = -rng.uniform(2.0, 6.0, 40)
+    vx = np.linspace(0.3, 4.0, 40) * -vy
+    om = rng.normal(0.0, 20.0, 40)
+    true = spinimpact.solve(ball, vx, vy, om, mu=0.35, kappa=0.75).after
+    cols = {"vx": vx, "vy": vy, "omega": om}
+    for name, sigma in (("vx", 0.05), ("vy", 0.05), ("omega", 3.0)):
+        cols[f"after_{name}"] = getattr(true, name) + rng.normal(0.0, sigma, 40)
+    cols["after_omega"][::4] = np.nan  # an empty cell: not measured
+    for name, sigma in (("vx", 0.05), ("vy", 0.05), ("omega", 3.0)):
+        cols[f"sigma_after_{name}"] = np.full(40, sigma)
+    _write_csv(path, cols)
+
+
+def _sphere_bounces(path):
+    """docs/fitting.md's "Any problem" example as `spinimpact fit --problem sphere` reads it:
+    30 bounces of a tennis ball in 3D, the rebound velocity and spin with noise."""
+    import numpy as np
+
+    ball = spinimpact.BALLS["tennis"]
+    rng = np.random.default_rng(2)
+    v = np.stack([rng.uniform(4, 20, 30), -rng.uniform(3, 8, 30), rng.uniform(-3, 3, 30)], -1)
+    w = rng.normal(0.0, 50.0, (30, 3))
+    true = spinimpact.solve_sphere(ball.body, v, w, mu=0.62, kappa=0.75).after
+    cols = {name: v[:, k] for k, name in enumerate(("vx", "vy", "vz"))}
+    cols |= {name: w[:, k] for k, name in enumerate(("wx", "wy", "wz"))}
+    for name in ("vx", "vy", "vz", "wx", "wy", "wz"):
+        sigma = 0.05 if name.startswith("v") else 3.0  # m/s, rad/s
+        cols[f"after_{name}"] = getattr(true, name) + rng.normal(0.0, sigma, 30)
+        cols[f"sigma_after_{name}"] = np.full(30, sigma)
+    _write_csv(path, cols)
+
+
+def _rods(path):
+    """docs/planar.md's rods.csv: columns mass, inertia, rx, ry, vx, vy, omega, one uniform
+    rod (1 kg, 1 m) per row, touching with its lower end."""
+    end = 0.5 * math.sqrt(0.5)  # the end of a 1 m rod at 45 degrees
+    cols = {
+        "mass": [1.0, 1.0],
+        "inertia": [1 / 12, 1 / 12],
+        "rx": [-end, end],
+        "ry": [-end, -end],
+        "vx": [0.5, 1.0],
+        "vy": [-1.0, -2.0],
+        "omega": [0.0, 3.0],
+    }
+    _write_csv(path, cols)
+
+
+def _write_csv(path, cols):
+    """Columns as a CSV file; NaN is an empty cell."""
+    rows = zip(*(list(map(float, c)) for c in cols.values()), strict=True)
+    text = ",".join(cols) + "\n"
+    text += "".join(",".join("" if x != x else repr(x) for x in row) + "\n" for row in rows)
+    path.write_text(text)
+
+
+def write_inputs(argv, folder):
+    """Write the input file a page's command reads, as the page describes it."""
+    if "rods.csv" in argv:
+        _rods(folder / "rods.csv")
+    if "bounces.csv" in argv:
+        sphere = "--problem" in argv and argv[argv.index("--problem") + 1] == "sphere"
+        (_sphere_bounces if sphere else _paper_bounces)(folder / "bounces.csv")
+
+
+RUN = [
+    pytest.param(command, shown, id=f"{where} {command[:60]}")
+    for path in PAGES
+    for where, rule, commands in code_blocks(path)
+    if rule == "shell"
+    for command, shown in commands
+    if command not in NOT_RUN
+]
+
+
+@pytest.mark.parametrize(("command", "shown"), RUN)
+@pytest.mark.slow
+def test_every_command_on_a_page_runs(command, shown, tmp_path):
+    """Each command a page shows exits with status 0 and prints the lines the page shows."""
+    argv = argv_of(command)
+    write_inputs(argv, tmp_path)
+    env = dict(os.environ, MPLBACKEND="Agg", PYTHONPATH=str(ROOT))  # `-m benchmarks...`
+    done = subprocess.run(argv, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, f"{command}\n{done.stderr[-3000:]}"
+    printed = {line.strip() for line in (done.stdout + done.stderr).splitlines()}
+    assert [line for line in shown if line.strip() and line.strip() not in printed] == []
+
+
+def test_the_pages_show_commands_that_run():
+    assert len(RUN) >= 10  # README 2, planar.md 2, sphere3d.md 2, flight.md 1, fitting.md 3
+
+
+def test_code_block_rules_find_what_has_none(tmp_path):
+    page = tmp_path / "page.md"
+    page.write_text(
+        "```python\nx = 1\n```\n\n```{toctree}\nindex\n```\n\n"
+        "```console\nspinimpact solve --vx 1 \\\n    --vy -2   # a comment\nmake test\n```\n"
+        "```text\nshown\n```\n\n"
+        "````console\n$ python -m spinimpact problems\npaper\n````\n\n"
+        "```console\nrm -rf build\nmake nothing\n```\n\n"
+        "```text\nalone\n```\n\n```\nbare\n```\n"
+    )
+    found = [(rule, commands) for _, rule, commands in code_blocks(page)]
+    assert found == [
+        ("python", []),
+        ("directive", []),
+        ("shell", [("spinimpact solve --vx 1 --vy -2", []), ("make test", ["shown"])]),
+        ("output", []),
+        ("shell", [("python -m spinimpact problems", ["paper"])]),
+        (
+            "no rule: commands ['rm -rf build', 'make nothing']",
+            [("rm -rf build", []), ("make nothing", [])],
+        ),
+        ("no rule: a ```text block", []),
+        ("no rule: a ``` block", []),
+    ]
+    assert argv_of("spinimpact solve")[1:] == ["-m", "spinimpact", "solve"]
+    assert argv_of(".venv/bin/python -m benchmarks.flight_bench")[1:] == [
+        "-m",
+        "benchmarks.flight_bench",
+    ]
+    assert argv_of("pip install spinimpact") is None
 
 
 # --- The bibliography -------------------------------------------------------------------
