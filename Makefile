@@ -41,8 +41,12 @@ docs: $(DOCS_STAMP)  ## build the documentation site into build/docs/html (warni
 demo: $(BASE)  ## solve the documented default impact and print the report
 	$(VENV)/bin/spinimpact solve
 
+# make test runs the tests on two pytest-xdist workers, a test file each at a time (WORKERS=0:
+# all in this one process); a test marked alone still runs with no other test beside it.
+WORKERS ?= 2
+
 test: $(STAMP) docs  ## build the documentation site, then run the whole test suite (what CI runs)
-	$(PY) -m pytest
+	$(PY) -m pytest -n $(WORKERS) --dist loadfile
 
 check: $(STAMP)  ## the everyday quick subset: every test but the slow and browser ones, 25 examples a property
 	SPINIMPACT_HYPOTHESIS=quick $(PY) -m pytest -m "not slow and not browser"

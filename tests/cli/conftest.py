@@ -11,7 +11,7 @@ from spinimpact.cli import main
 def cli(capsys):
     """Run ``spinimpact ...`` in this process: (exit status, stdout, stderr); the signal
     handlers the command installs are put back afterwards."""
-    previous = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    previous = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM, signal.SIGALRM)}
 
     def call(*args):
         try:

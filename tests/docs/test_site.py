@@ -166,6 +166,9 @@ def test_broken_links_are_found(tmp_path):
 
 _OVERFLOW = """() => {
     const doc = document.documentElement;
+    if (doc.scrollWidth <= doc.clientWidth + 1) {  // the common case: no element to name
+        return {scroll: doc.scrollWidth, client: doc.clientWidth, wide: []};
+    }
     const wide = [...document.querySelectorAll('body *')].filter(e => {
         const r = e.getBoundingClientRect();
         return r.width > 0 && r.right > doc.clientWidth + 1
