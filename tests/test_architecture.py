@@ -45,7 +45,7 @@ ALLOWED = {
     "_validation": set(),
 }
 #: Modules at the top level that import nothing of the package, so every layer may use them.
-_LEAVES = ("_long", "_words")
+_LEAVES = ("_limits", "_long", "_words")
 for _layer_name in ALLOWED:
     ALLOWED[_layer_name] = ALLOWED[_layer_name] | set(_LEAVES)
 for _leaf in _LEAVES:
