@@ -184,7 +184,7 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
 
         require("numba", "many rigid-body impacts in 3D")
     ended = codes[2].astype(bool)
-    out[:, ~ended] = np.nan
+    out[:, ~ended & (out[5] < p_max)] = np.nan  # no end: a jam (p_max reached: part-way)
     v0 = np.broadcast_to(np.asarray(velocity, np.float64), (*shape, 3)).reshape(n, 3)
     v1 = out[0:3].T
     p = out[3:6].T

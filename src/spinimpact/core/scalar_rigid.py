@@ -314,10 +314,10 @@ def _linear(w, mu, kappa, law, p_max, y, state, r1, r2, rho, lam, f1, f2, vn0):
             target = -kappa * kappa * wn_c  # the restitution work still to come ...
             if p_c >= p_s:
                 p_end = p_c + math.sqrt(2.0 * target / slope)
-            else:  # ... less what was done before this phase
-                v0 = max(vn_s, 0.0)
+            else:  # ... less what was done before this phase (negative where vn fell
+                # below zero again after compression: friction pressing the contact back)
                 left = max(target - (wn_s - wn_c), 0.0)
-                p_end = p_s + (-v0 + math.sqrt(v0 * v0 + 2.0 * slope * left)) / slope
+                p_end = p_s + (-vn_s + math.sqrt(vn_s * vn_s + 2.0 * slope * left)) / slope
         p_end = max(p_end, p_s)
     p_stop = p_s + rho / -lam if (rho > 0.0 and lam < 0.0) else math.inf
     stopped = p_stop < p_end and p_stop <= p_max
@@ -348,9 +348,9 @@ def _slide(w, mu, kappa, law, rtol, p_max, scale, y, state, k, out, tmp, steps, 
     p = state[0]
     compressed = state[1] > 0.0
     p_c, wn_c = state[2], state[3]
-    p_unit = abs(y[2]) / w[5] if y[2] != 0.0 else scale / w[5]
+    p_unit = scale / (w[0] + w[3] + w[5])  # W p then errs by at most rtol * scale
     tol_v = rtol * scale
-    h = 0.01 * p_unit
+    h = 0.01 * abs(y[2]) / w[5]
     ended = False
     while steps < _MAX_STEPS:
         rho = math.hypot(y[0], y[1])
@@ -384,8 +384,8 @@ def _slide(w, mu, kappa, law, rtol, p_max, scale, y, state, k, out, tmp, steps, 
             p += h
             y[:] = out
             compressed, p_c, wn_c = True, p, y[3]
-            if kappa == 0.0:
-                ended = True
+            if law != 1 and _event(law, kappa, vn0, wn_c, y) >= 0.0:
+                ended = True  # kappa = 0 (or kappa^2 below the smallest float)
                 break
             continue
         if compressed and law != 1 and _event(law, kappa, vn0, wn_c, out) >= 0.0:

@@ -17,7 +17,6 @@ from typing import Any
 import numpy as np
 
 from .._validation import approach, as_real_array, broadcast, check, validated, vector3
-from ..core import rigid3d
 from .sphere3d import Surface
 
 __all__ = ["RigidBody", "RigidImpact", "solve_contact", "solve_rigid"]
@@ -158,6 +157,8 @@ class RigidBody:
 
     def matrix(self) -> np.ndarray:
         """The collision matrix at the contact point, world frame (1/kg)."""
+        from ..core import rigid3d  # Numba, where installed, loads with it: only when used
+
         return rigid3d.body_matrix(self.mass, self.inertia, self.offset)
 
 
@@ -197,6 +198,8 @@ def _contact(matrix: np.ndarray, velocity: np.ndarray, normal: np.ndarray, mu, k
         raise TypeError(f"law must be a string, one of {', '.join(LAWS)}; got {law!r}")
     if law not in LAWS:
         raise ValueError(f"law must be one of {', '.join(LAWS)}; got {law!r}")
+    from ..core import rigid3d  # Numba, where installed, loads with it: only when used
+
     mu = validated("mu", mu)
     kappa = validated("kappa", kappa)
     axes = rigid3d.frame(normal)
