@@ -48,7 +48,14 @@ from .model.planar_body import Pendulum, PlanarBody
 from .model.presets import BALLS, GROUNDS, Ball, Ground, Wall
 from .model.registry import Input, Problem, detect, problem, problems, register, unregister
 from .model.restitution import ConstantRestitution, RestitutionModel, TabulatedRestitution
-from .model.rigid import RigidBody, RigidImpact, solve_contact, solve_rigid
+from .model.rigid import (
+    RigidBody,
+    RigidHistory,
+    RigidImpact,
+    rigid_history,
+    solve_contact,
+    solve_rigid,
+)
 from .model.sphere3d import SphereImpact, State3, Surface, Vector, solve_sphere
 
 try:  # one source of the version: the package's metadata, from pyproject.toml
@@ -112,6 +119,8 @@ __all__ = [
     "solve_planar",
     "RigidBody",
     "RigidImpact",
+    "RigidHistory",
+    "rigid_history",
     "solve_contact",
     "solve_rigid",
 ]

@@ -59,8 +59,8 @@ class ContactImpact(NamedTuple):
     stop_impulse : ndarray
         The normal impulse at which the slip stopped (N s; NaN where it did not).
     sequence : ndarray of str
-        The phases in order: ``"slide"``, ``"slide,stick"``, ``"slide,slide"`` (stopped and
-        slid again along the direction ``W`` dictates) or ``"stick"``.
+        The phases in order: ``"slide"``, ``"slide-stick"``, ``"slide-reslide"`` (stopped
+        and slid again along the direction ``W`` dictates) or ``"stick"``.
     steps : ndarray of int
         Integration steps of the sliding phase.
     ended : ndarray of bool
@@ -89,14 +89,14 @@ def _one(w, v, mu, kappa, law, rtol, p_max):
                                 v[0], v[1], v[2], mu, kappa, law, rtol, p_max)  # fmt: skip
 
 
-def _rigid_kernel(w, s_w, v, s_v, mu, s_mu, kappa, s_kappa, law, rtol, p_max, out, codes):
+def _rigid_kernel(w, s_w, v, s_v, mu, s_mu, kappa, s_kappa, law, rtol, p_max, s_p, out, codes):
     """Every impact ``i``: ``W = w[i * s_w]``, ``v[i * s_v]``, ... into ``out[:, i]`` and
     ``codes[:, i]`` (sequence, steps, ended)."""
     for i in numba.prange(codes.shape[1]):
         r = _scalar.rigid_impact(
             w[i * s_w, 0], w[i * s_w, 1], w[i * s_w, 2], w[i * s_w, 4], w[i * s_w, 5],
             w[i * s_w, 8], v[i * s_v, 0], v[i * s_v, 1], v[i * s_v, 2], mu[i * s_mu],
-            kappa[i * s_kappa], law, rtol, p_max,
+            kappa[i * s_kappa], law, rtol, p_max[i * s_p],
         )  # fmt: skip
         out[0, i], out[1, i], out[2, i], out[3, i], out[4, i] = r[0], r[1], r[2], r[3], r[4]
         out[5, i], out[6, i], out[7, i], out[8, i], out[9, i] = r[5], r[6], r[7], r[8], r[9]
@@ -126,7 +126,7 @@ def _rows(a: np.ndarray, shape: tuple[int, ...], tail: tuple[int, ...]) -> tuple
 
 
 def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float = RTOL,
-                   p_max: float = np.inf) -> ContactImpact:  # fmt: skip
+                   p_max: Any = np.inf) -> ContactImpact:  # fmt: skip
     """Many impacts, each of a rigid body (or two) at one point contact (Keller's method).
 
     Parameters
@@ -144,8 +144,9 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
         (:mod:`spinimpact.core.scalar_rigid`).
     rtol : float
         Local error per step of the sliding phase, a fraction of the speed scale.
-    p_max : float
-        Stop at this normal impulse (N s) if the impact has not ended: the state part-way.
+    p_max : float or array_like
+        Stop at this normal impulse (N s) if the impact has not ended: the state part-way
+        (an array of them along one impact gives its history).
 
     Returns
     -------
@@ -160,23 +161,25 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
     """
     code = _scalar.LAW_CODES.index(law)
     shape = np.broadcast_shapes(np.shape(W)[:-2], np.shape(velocity)[:-1], np.shape(mu),
-                                np.shape(kappa))  # fmt: skip
+                                np.shape(kappa), np.shape(p_max))  # fmt: skip
     n = int(np.prod(shape, dtype=np.int64))
     out = np.empty((_FLOATS, n))
     codes = np.empty((3, n), dtype=np.int64)
     if HAVE_NUMBA:
         w, s_w = _rows(W, shape, (3, 3))
         v, s_v = _rows(velocity, shape, (3,))
-        m, s_m = _rows(mu, shape, (1,))
-        k, s_k = _rows(kappa, shape, (1,))
-        _rigid_kernel(w, s_w, v, s_v, m[:, 0], s_m, k[:, 0], s_k, code, float(rtol),
-                      float(p_max), out, codes)  # fmt: skip
+        m, s_m = _rows(np.asarray(mu, np.float64)[..., None], shape, (1,))
+        k, s_k = _rows(np.asarray(kappa, np.float64)[..., None], shape, (1,))
+        c, s_c = _rows(np.asarray(p_max, np.float64)[..., None], shape, (1,))
+        _rigid_kernel(w, s_w, v, s_v, m[:, 0], s_m, k[:, 0], s_k, code, float(rtol), c[:, 0],
+                      s_c, out, codes)  # fmt: skip
     elif n == 1:
         w = np.broadcast_to(np.asarray(W, np.float64), (*shape, 3, 3)).reshape(3, 3)
         v = np.broadcast_to(np.asarray(velocity, np.float64), (*shape, 3)).reshape(3)
         m = float(np.broadcast_to(mu, shape).reshape(-1)[0])
         k = float(np.broadcast_to(kappa, shape).reshape(-1)[0])
-        r = _one(w, v, m, k, code, float(rtol), float(p_max))
+        c = float(np.broadcast_to(p_max, shape).reshape(-1)[0])
+        r = _one(w, v, m, k, code, float(rtol), c)
         out[:, 0] = r[:_FLOATS]
         codes[:, 0] = r[11], r[12], int(r[13])
     else:  # pragma: no cover - depends on the optional extra
@@ -184,7 +187,8 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
 
         require("numba", "many rigid-body impacts in 3D")
     ended = codes[2].astype(bool)
-    out[:, ~ended & (out[5] < p_max)] = np.nan  # no end: a jam (p_max reached: part-way)
+    limit = np.broadcast_to(np.asarray(p_max, np.float64), shape).reshape(-1)
+    out[:, ~ended & (out[5] < limit)] = np.nan  # no end: a jam (p_max reached: part-way)
     v0 = np.broadcast_to(np.asarray(velocity, np.float64), (*shape, 3)).reshape(n, 3)
     v1 = out[0:3].T
     p = out[3:6].T

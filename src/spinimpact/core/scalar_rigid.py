@@ -55,7 +55,7 @@ __all__ = ["LAW_CODES", "SEQUENCES", "reslide_direction", "rigid_impact"]
 LAW_CODES = ("newton", "poisson", "energetic")
 
 #: The sequences of phases by code (``rigid_impact``'s ``sequence``).
-SEQUENCES = ("slide", "slide,stick", "slide,slide", "stick")
+SEQUENCES = ("slide", "slide-stick", "slide-reslide", "stick")
 
 _SAFETY = 0.9
 _MAX_STEPS = 200_000

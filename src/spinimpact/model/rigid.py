@@ -17,9 +17,17 @@ from typing import Any
 import numpy as np
 
 from .._validation import approach, as_real_array, broadcast, check, validated, vector3
-from .sphere3d import Surface
+from .result import Array, Result, freeze
+from .sphere3d import State3, Surface, Vector
 
-__all__ = ["RigidBody", "RigidImpact", "solve_contact", "solve_rigid"]
+__all__ = [
+    "RigidBody",
+    "RigidHistory",
+    "RigidImpact",
+    "rigid_history",
+    "solve_contact",
+    "solve_rigid",
+]
 
 #: The restitution laws by name, as :func:`spinimpact.solve_planar` names them.
 LAWS = ("poisson", "newton", "energetic")
@@ -163,31 +171,49 @@ class RigidBody:
 
 
 @dataclass(frozen=True, eq=False)
-class RigidImpact:
+class RigidImpact(Result):
     """The impact of a rigid body (or of a contact given by its collision matrix).
 
-    Vectors are in the world frame, arrays of the impacts' shape (vectors with a last
-    axis of 3). ``velocity``, ``spin`` are NaN for :func:`solve_contact` (no body).
+    Vectors are in the world frame, by components; every field is an array of the impacts'
+    shape. ``after`` is NaN for :func:`solve_contact` (no body: map ``impulse`` to yours).
     """
 
-    velocity: np.ndarray  #: centre velocity after the impact, m/s
-    spin: np.ndarray  #: spin vector after the impact, rad/s
-    impulse: np.ndarray  #: the contact impulse on the body, N s
-    contact_velocity_before: np.ndarray  #: the contact point's velocity, m/s
-    contact_velocity_after: np.ndarray  #: the contact point's velocity after, m/s
-    normal_impulse: np.ndarray  #: N s
-    compression_impulse: np.ndarray  #: the normal impulse at the end of compression, N s
-    stop_impulse: np.ndarray  #: the normal impulse at which the slip stopped (NaN if never)
-    sequence: np.ndarray  #: phases: "slide", "slide,stick", "slide,slide" or "stick"
-    work_compression: np.ndarray  #: the normal force's work in compression, J (<= 0)
-    work_restitution: np.ndarray  #: the normal force's work in restitution, J
-    work_tangential: np.ndarray  #: friction's work, J (<= 0)
-    dissipated_energy: np.ndarray  #: kinetic energy lost, J (< 0: the law created energy)
-    newton_restitution: np.ndarray  #: ``-v_n^+ / v_n^-``
-    poisson_restitution: np.ndarray  #: restitution over compression impulse
-    energetic_restitution: np.ndarray  #: ``sqrt(-W_r / W_c)``
-    creates_energy: np.ndarray  #: whether the impact created kinetic energy
-    law: str  #: the restitution law
+    after: State3  #: centre velocity (m/s) and spin (rad/s) after the impact
+    impulse: Vector  #: the contact impulse on the body, N s
+    contact_before: Vector  #: the contact point's velocity relative to the surface, m/s
+    contact_after: Vector  #: the same after the impact, m/s
+    normal_impulse: Array  #: N s
+    compression_impulse: Array  #: the normal impulse at the end of compression, N s
+    stop_impulse: Array  #: the normal impulse at which the slip stopped (NaN if never), N s
+    regime: Array  #: the phases: slide, slide-stick, slide-reslide or stick
+    work_compression: Array  #: the normal force's work in compression, J (<= 0)
+    work_restitution: Array  #: the normal force's work in restitution, J
+    work_tangential: Array  #: friction's work, J (<= 0)
+    dissipated_energy: Array  #: kinetic energy lost, J (< 0: the law created energy)
+    newton_restitution: Array  #: ``-v_n^+ / v_n^-``
+    poisson_restitution: Array  #: restitution over compression impulse
+    energetic_restitution: Array  #: ``sqrt(W_r / -W_c)``
+    creates_energy: Array  #: whether the impact created kinetic energy
+    law: str = "poisson"  #: the restitution law
+
+    @property
+    def velocity(self) -> np.ndarray:
+        """The centre velocity after the impact, shape (..., 3), m/s."""
+        return self.after.velocity
+
+    @property
+    def spin(self) -> np.ndarray:
+        """The spin vector after the impact, shape (..., 3), rad/s."""
+        return self.after.spin
+
+    @property
+    def sequence(self) -> np.ndarray:
+        """The phases, as :attr:`regime` names them."""
+        return np.asarray(self.regime)
+
+
+def _vector(a: np.ndarray) -> Vector:
+    return Vector(*(freeze(a[..., k]) for k in range(3)))
 
 
 def _contact(matrix: np.ndarray, velocity: np.ndarray, normal: np.ndarray, mu, kappa,
@@ -303,13 +329,68 @@ def _finish(result, vn_before, impulse, before, after, v1, w1, law) -> RigidImpa
         energetic = np.sqrt(np.maximum(-result.work_restitution / result.work_compression, 0))
         newton = -result.velocity[..., 2] / vn_before
         poisson = pn / result.compression_impulse - 1.0
+    state = State3(*(freeze(v1[..., k]) for k in range(3)), *(freeze(w1[..., k]) for k in range(3)))
     return RigidImpact(
-        velocity=v1, spin=w1, impulse=impulse, contact_velocity_before=before,
-        contact_velocity_after=after, normal_impulse=pn,
-        compression_impulse=result.compression_impulse, stop_impulse=result.stop_impulse,
-        sequence=result.sequence, work_compression=result.work_compression,
-        work_restitution=result.work_restitution, work_tangential=result.work_tangential,
-        dissipated_energy=result.dissipated, newton_restitution=newton,
-        poisson_restitution=poisson, energetic_restitution=energetic,
-        creates_energy=result.dissipated < 0, law=law,
+        after=state, impulse=_vector(impulse), contact_before=_vector(before),
+        contact_after=_vector(after), normal_impulse=freeze(pn),
+        compression_impulse=freeze(result.compression_impulse),
+        stop_impulse=freeze(result.stop_impulse), regime=freeze(result.sequence),
+        work_compression=freeze(result.work_compression),
+        work_restitution=freeze(result.work_restitution),
+        work_tangential=freeze(result.work_tangential),
+        dissipated_energy=freeze(result.dissipated), newton_restitution=freeze(newton),
+        poisson_restitution=freeze(poisson), energetic_restitution=freeze(energetic),
+        creates_energy=freeze(result.dissipated < 0), law=law,
+    )  # fmt: skip
+
+
+@dataclass(frozen=True, eq=False)
+class RigidHistory:
+    """One impact over the normal impulse: the slip's hodograph and the normal velocity.
+
+    ``slip`` holds the contact point's tangential velocity along the contact frame's axes
+    ``t1, t2`` (``axes``' first two columns, world frame), so that a plot of its two
+    columns is the hodograph: a straight line towards the origin while the direction keeps,
+    a curve while it turns, the origin itself while it sticks.
+    """
+
+    normal_impulse: np.ndarray  #: (n,), N s
+    slip: np.ndarray  #: (n, 2), m/s, along t1 and t2
+    normal_velocity: np.ndarray  #: (n,), m/s
+    axes: np.ndarray  #: (3, 3): columns t1, t2, n in the world frame
+    compression_impulse: float  #: N s
+    stop_impulse: float  #: N s (NaN if the slip never stopped)
+    final_impulse: float  #: the normal impulse at the end, N s
+    sequence: str  #: the phases, as :attr:`RigidImpact.regime` names them
+
+
+def rigid_history(body: RigidBody, velocity: Any, spin: Any, *, mu: Any, kappa: Any,
+                  law: str = "poisson", surface: Surface | None = None,
+                  points: int = 400) -> RigidHistory:  # fmt: skip
+    """The process of one impact of :func:`solve_rigid` over the normal impulse, at
+    ``points`` impulses from 0 to the end (and at the stop and the end of compression).
+
+    Raises
+    ------
+    ValueError
+        For more than one impact (it follows one).
+    """
+    from ..core import rigid3d
+
+    one = solve_rigid(body, velocity, spin, mu=mu, kappa=kappa, law=law, surface=surface)
+    if np.ndim(one.normal_impulse) != 0:
+        raise ValueError("rigid_history follows one impact: give one body, velocity and spin")
+    surface = Surface() if surface is None else surface
+    axes = rigid3d.frame(surface.normal)
+    matrix = np.swapaxes(axes, -1, -2) @ body.matrix() @ axes
+    before = np.einsum("...ji,...j->...i", axes, one.contact_before.array)
+    end = float(one.normal_impulse)
+    marks = [float(one.compression_impulse), float(one.stop_impulse)]
+    grid = np.unique(np.concatenate([np.linspace(0.0, end, int(points)),
+                                     [m for m in marks if np.isfinite(m)]]))  # fmt: skip
+    states = rigid3d.contact_impact(matrix, before, float(mu), float(kappa), law, p_max=grid)
+    return RigidHistory(
+        normal_impulse=grid, slip=states.velocity[:, :2], normal_velocity=states.velocity[:, 2],
+        axes=np.asarray(axes), compression_impulse=marks[0], stop_impulse=marks[1],
+        final_impulse=end, sequence=str(one.regime),
     )  # fmt: skip
