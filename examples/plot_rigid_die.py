@@ -34,8 +34,10 @@ for heading in np.radians(np.arange(0, 360, 45)):
     if np.isfinite(h.stop_impulse):
         hodo.plot(0, 0, "x", color="k", ms=8)
     normal.plot(1e3 * h.normal_impulse, h.normal_velocity, color=line.get_color(), lw=1.2)
-    print(f"heading {np.degrees(heading):5.1f} deg: {h.sequence:12s} "
-          f"normal impulse {1e3 * h.final_impulse:.3f} mN s")
+    print(
+        f"heading {np.degrees(heading):5.1f} deg: {h.sequence:12s} "
+        f"normal impulse {1e3 * h.final_impulse:.3f} mN s"
+    )
 hodo.set_aspect("equal")
 hodo.set_xlabel("slip along $t_1$, m/s")
 hodo.set_ylabel("slip along $t_2$, m/s")

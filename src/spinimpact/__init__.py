@@ -19,6 +19,7 @@ from importlib import metadata as _metadata
 from . import _limits  # noqa: F401  (first: bounds the thread pools under ulimit -v)
 from .model import flight_problem as _flight_problem  # noqa: F401  (and the ball's flight)
 from .model import problems as _problems  # noqa: F401  (declares the built-in problems)
+from .model import rigid_problem as _rigid_problem  # noqa: F401  (and any rigid body in 3D)
 from .model.body import Body
 from .model.compliance import (
     CompliantImpact,

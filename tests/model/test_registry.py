@@ -9,7 +9,7 @@ from spinimpact import detect, problem, problems, register
 
 
 def test_the_built_in_problems_are_listed_and_solve_like_their_functions():
-    names = ["paper", "planar", "pendulum", "sphere", "pair", "flight"]
+    names = ["paper", "planar", "pendulum", "sphere", "pair", "flight", "rigid"]
     assert [p.name for p in problems()] == names
     ball = spinimpact.Body.solid_sphere(mass=1.0, radius=0.1)
     for declared in problems():
@@ -45,6 +45,7 @@ def test_every_input_and_result_column_has_a_unit_or_is_text():
         ([*"vx vy vz wx wy wz vx2 vy2 vz2 wx2 wy2 wz2".split()], "pair"),
         (["speed", "elevation_deg"], "flight"),
         (["ball", "surface", "speed", "elevation_deg", "topspin_rpm"], "flight"),
+        ([*"mass ixx iyy izz rx ry rz vx vy vz wx wy wz".split()], "rigid"),
     ],
 )
 def test_a_files_columns_name_its_problem(header, name):

@@ -293,3 +293,38 @@ def test_bad_input_is_named(call, error, text):
     body = RigidBody.cuboid(mass=1.0, size=[1.0, 1.0, 1.0])
     with pytest.raises(error, match=text):
         call(body)
+
+
+def test_a_file_of_rigid_bodies_is_solved_as_solve_rigid_solves_them(tmp_path):
+    from spinimpact.io.batch import run_batch
+
+    rng = np.random.default_rng(13)
+    body = dice(rng, 40)
+    v, w = approaching(rng, body, 40)
+    laws = np.array(LAWS)[rng.integers(0, 3, 40)]
+    names = ["mass", "ixx", "iyy", "izz", "ixy", "ixz", "iyz", "rx", "ry", "rz",
+             "vx", "vy", "vz", "wx", "wy", "wz", "law"]  # fmt: skip
+    tensor = body.inertia
+    columns = [body.mass, tensor[:, 0, 0], tensor[:, 1, 1], tensor[:, 2, 2], tensor[:, 0, 1],
+               tensor[:, 0, 2], tensor[:, 1, 2], *body.offset.T, *v.T, *w.T]  # fmt: skip
+    lines = [",".join(names)]
+    lines += [",".join([*(repr(float(c[i])) for c in columns), laws[i]]) for i in range(40)]
+    (tmp_path / "bodies.csv").write_text("\n".join(lines) + "\n")
+    run_batch(tmp_path / "bodies.csv", tmp_path / "out.csv", defaults={}, chunk_size=16)
+    out = np.genfromtxt(tmp_path / "out.csv", delimiter=",", names=True, dtype=None,
+                        encoding="utf-8")  # fmt: skip
+    for law in LAWS:
+        rows = laws == law
+        want = solve_rigid(
+            RigidBody(body.mass[rows], tensor[rows], body.offset[rows]),
+            v[rows],
+            w[rows],
+            mu=0.2,
+            kappa=0.8,
+            law=law,
+        )  # the defaults
+        assert np.array_equal(out["regime"][rows], want.regime)
+        for k, c in enumerate("xyz"):  # the file holds the tensor's upper triangle: the
+            # body's own tensor is symmetric only to rounding
+            assert np.allclose(out[f"after_v{c}"][rows], want.velocity[:, k], rtol=1e-12,
+                               atol=1e-12)  # fmt: skip
