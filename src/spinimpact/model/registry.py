@@ -15,7 +15,7 @@ Examples
 --------
 >>> from spinimpact import problems, problem
 >>> [p.name for p in problems()]
-['paper', 'planar', 'pendulum', 'sphere', 'pair', 'flight']
+['paper', 'planar', 'pendulum', 'sphere', 'pair', 'flight', 'rigid']
 >>> sphere = problem("sphere")
 >>> sphere.input("wx").unit, sphere.input("wx").vector
 ('rad/s', 'spin')
