@@ -328,3 +328,14 @@ def test_a_file_of_rigid_bodies_is_solved_as_solve_rigid_solves_them(tmp_path):
             # body's own tensor is symmetric only to rounding
             assert np.allclose(out[f"after_v{c}"][rows], want.velocity[:, k], rtol=1e-12,
                                atol=1e-12)  # fmt: skip
+
+
+def test_an_impulse_changes_the_contact_points_velocity_by_the_body_matrix():
+    # two routes: the body's own equations (apply_impulse) and the collision matrix
+    rng = np.random.default_rng(14)
+    body = dice(rng, 100)
+    v, w, p = rng.normal(size=(3, 100, 3))
+    v1, w1 = rigid3d.apply_impulse(body.mass, body.inertia, body.offset, v, w, p)
+    change = (v1 + np.cross(w1, body.offset)) - (v + np.cross(w, body.offset))
+    assert np.allclose(change, np.einsum("nij,nj->ni", body.matrix(), p), rtol=1e-12,
+                       atol=1e-12)  # fmt: skip

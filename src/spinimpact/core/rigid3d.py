@@ -23,7 +23,14 @@ import numpy as np
 from . import scalar_rigid as _scalar
 from .fused import HAVE_NUMBA, _njit
 
-__all__ = ["ContactImpact", "body_matrix", "contact_impact", "frame", "jacobian_matrix"]
+__all__ = [
+    "ContactImpact",
+    "apply_impulse",
+    "body_matrix",
+    "contact_impact",
+    "frame",
+    "jacobian_matrix",
+]
 
 if HAVE_NUMBA:  # pragma: no branch - depends on the optional extra
     import numba
@@ -215,8 +222,9 @@ def _cross_matrix(r: np.ndarray) -> np.ndarray:
 def body_matrix(mass, inertia, offset) -> np.ndarray:
     """The collision matrix of a free rigid body at a contact point, in the world frame.
 
-    ``W = I/m - [r]x J^-1 [r]x`` (Stronge, *Impact Mechanics*, 2000, eq. 5.4): the contact
-    point's velocity changes by ``W p`` under an impulse ``p`` there.
+    ``W = I/m - [r]x J^-1 [r]x`` (Stronge, *Impact Mechanics*, 2000, ch. 5; derived from
+    ``dv = p/m`` and ``dw = J^-1 (r x p)`` at the point ``v + w x r``): the contact point's
+    velocity changes by ``W p`` under an impulse ``p`` there (:func:`apply_impulse`).
 
     Parameters
     ----------
@@ -235,6 +243,16 @@ def body_matrix(mass, inertia, offset) -> np.ndarray:
     inverse = np.linalg.inv(np.asarray(inertia, dtype=np.float64))
     m = np.asarray(mass, dtype=np.float64)[..., None, None]
     return np.eye(3) / m - r @ inverse @ r
+
+
+def apply_impulse(mass, inertia, offset, velocity, spin, impulse) -> tuple[np.ndarray, np.ndarray]:
+    """A free body's centre velocity and spin after an impulse at a point of it:
+    ``v + p/m`` and ``w + J^-1 (r x p)`` (world frame; shapes as :func:`body_matrix`'s, the
+    vectors ``(..., 3)``)."""
+    p = np.asarray(impulse, dtype=np.float64)
+    turn = np.cross(np.asarray(offset, dtype=np.float64), p)
+    moment = np.linalg.solve(np.asarray(inertia, dtype=np.float64), turn[..., None])[..., 0]
+    return velocity + p / np.asarray(mass, dtype=np.float64)[..., None], spin + moment
 
 
 def jacobian_matrix(mass_matrix, jacobian) -> np.ndarray:

@@ -292,10 +292,9 @@ def solve_rigid(body: RigidBody, velocity: Any, spin: Any, *, mu: Any, kappa: An
     before = v + np.cross(w, offset) - surface.velocity
     matrix = body.matrix()
     result, vn, impulse, after = _contact(matrix, before, surface.normal, mu, kappa, law)
-    mass = np.asarray(body.mass)[..., None]
-    v1 = v + impulse / mass
-    w1 = w + np.einsum("...ij,...j->...i", np.linalg.inv(body.inertia),
-                       np.cross(offset, impulse))  # fmt: skip
+    from ..core import rigid3d
+
+    v1, w1 = rigid3d.apply_impulse(body.mass, body.inertia, offset, v, w, impulse)
     return _finish(result, vn, impulse, before, after, v1, w1, law)
 
 
