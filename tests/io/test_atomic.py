@@ -337,3 +337,19 @@ def test_new_outputs_get_ordinary_permissions(tmp_path):
     assert stat.S_IMODE((tmp_path / "a.csv").stat().st_mode) == 0o666 & ~mask
     assert stat.S_IMODE((tmp_path / "grid").stat().st_mode) == 0o777 & ~mask
     assert stat.S_IMODE((tmp_path / "grid" / "vx.npy").stat().st_mode) == 0o666 & ~mask
+
+
+def test_discard_all_removes_every_live_temporary_and_keeps_the_old_output(tmp_path):
+    # what a process that ends at once after running out of memory calls first
+    from spinimpact.io.atomic import discard_all
+
+    a = tmp_path / "a.txt"
+    a.write_text("old a")
+    with pytest.raises(RuntimeError), atomic_outputs(), atomic_path(a) as tmp:
+        tmp.write_text("new a")
+        assert hidden(tmp_path) != []
+        discard_all()
+        assert hidden(tmp_path) == []
+        raise RuntimeError("the run fails")
+    assert a.read_text() == "old a"
+    assert hidden(tmp_path) == []

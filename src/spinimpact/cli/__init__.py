@@ -86,7 +86,7 @@ def main(argv: list[str] | None = None) -> None:
 
     # The program (not a call from Python) keeps its handlers: a signal during the shutdown
     # after a finished command exits 128 + its number rather than killing the process.
-    with stop_on_signals(keep=argv is None), errors_to_exit_2():
+    with stop_on_signals(keep=argv is None), errors_to_exit_2(program=argv is None):
         # Any floating-point trouble becomes a clean error rather than inf/NaN in a report.
         with np.errstate(over="raise", divide="raise", invalid="raise"), atomic_outputs():
             cli.main(args=argv, prog_name="spinimpact", standalone_mode=False)

@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import sys
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from pathlib import Path
 from typing import Any
 
@@ -247,6 +247,25 @@ def _fail(message: str) -> None:
     sys.exit(2)
 
 
+def _fail_now(message: str) -> None:
+    """:func:`_fail`, then end the process at once with status 2, without the interpreter's
+    shutdown: after memory ran out, that shutdown could add lines ("Exception ignored in
+    ...") or abort in a native library ("terminate called without an active exception",
+    status -6). A temporary output still alive is removed first
+    (:func:`spinimpact.io.atomic.discard_all`); every old output is as it was."""
+    import os
+
+    from ..io.atomic import discard_all
+
+    for stream in (sys.stdout, sys.stderr):
+        with suppress(Exception):  # closed or broken: nothing more to say
+            stream.flush()
+    with suppress(Exception):
+        discard_all()
+    os.write(2, f"spinimpact: error: {message}\n".encode())
+    os._exit(2)
+
+
 #: The options that bound a command's memory, for the message when it runs out.
 MEMORY_OPTIONS = {
     "batch": "--chunk-size",
@@ -273,7 +292,7 @@ def _memory_advice() -> str:
 
 
 @contextmanager
-def errors_to_exit_2() -> Iterator[None]:
+def errors_to_exit_2(*, program: bool = False) -> Iterator[None]:
     """Turn every error in the input into one line on stderr and exit status 2.
 
     The package's error vocabulary, as the shell sees it:
@@ -295,7 +314,9 @@ def errors_to_exit_2() -> Iterator[None]:
       prints which and exits with status 128 + its number (130 for SIGINT, 143 for
       SIGTERM); Click's own abort prints ``spinimpact: aborted`` and exits with 130.
 
-    Anything else is a bug and keeps its traceback.
+    Anything else is a bug and keeps its traceback. With ``program=True`` (the command
+    line's own process, which ends next) running out of memory ends the process at once
+    after its line (:func:`_fail_now`).
     """
     import csv
     import signal
@@ -320,7 +341,10 @@ def errors_to_exit_2() -> Iterator[None]:
                 raise
             raise MemoryError("a call failed with no room left to say why") from None
     except MemoryError as exc:
-        _fail(f"out of memory ({str(exc) or 'MemoryError'}): {_memory_advice()}")
+        message = f"out of memory ({str(exc) or 'MemoryError'}): {_memory_advice()}"
+        if program:  # the process ends here: skip a shutdown that memory may not allow
+            _fail_now(message)
+        _fail(message)
     except Stopped as exc:
         name = signal.Signals(exc.signum).name
         click.echo(f"spinimpact: stopped by {name}; no output was changed", err=True)

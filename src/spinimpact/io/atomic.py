@@ -46,6 +46,8 @@ TEMPORARY_TAG = "spinimpact-partial"
 _NEWBORN = "spinimpact-new"  # the name before the lock is taken (a stale one is removed late)
 _NEWBORN_AGE = 60.0  # seconds after which an unlocked newborn temporary is stale
 _transactions: list[list[_Temporary]] = []
+#: Every temporary of this process not yet renamed into place or removed.
+_live: set[_Temporary] = set()
 
 
 def current_umask() -> int:
@@ -156,6 +158,7 @@ class _Temporary:
             name = Path(born).name.replace(f".{_NEWBORN}-", f".{TEMPORARY_TAG}-", 1)
             self.path = Path(born).with_name(name)
             os.rename(born, self.path)
+            _live.add(self)
         except BaseException:
             if born and directory:
                 shutil.rmtree(born, ignore_errors=True)
@@ -181,10 +184,20 @@ class _Temporary:
         self._release()
 
     def _release(self) -> None:
+        _live.discard(self)
         if self.fd >= 0:
             os.close(self.fd)
             self.fd = -1
             _stop.leave()
+
+
+def discard_all() -> None:
+    """Remove every temporary of this process still alive: for a process that ends at once,
+    without the interpreter's shutdown, after a failure (every old output stays as it
+    was)."""
+    for temporary in list(_live):
+        with contextlib.suppress(OSError):
+            temporary.discard()
 
 
 def _hand_over(temporary: _Temporary) -> None:
