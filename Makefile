@@ -27,7 +27,7 @@ $(BASE): pyproject.toml | $(PY)
 	touch $(BASE)
 
 $(STAMP): pyproject.toml | $(PY)
-	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax,docs]'
+	$(PY) -m pip install --quiet -e '.[test,parquet,fast,dask,engines,jax,docs,explore]'
 	touch $(STAMP)
 
 DOCS_STAMP := $(VENV)/.installed-docs
