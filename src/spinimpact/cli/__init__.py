@@ -17,6 +17,7 @@ import numpy as np
 
 from ._common import DEFAULTS, errors_to_exit_2
 from .batch import batch_command
+from .explore import explore_command
 from .fit import fit_command
 from .flight import flight_command
 from .pictures import figures_command, map_command
@@ -54,6 +55,7 @@ for _command in (
     flight_command,
     fit_command,
     problems_command,
+    explore_command,
 ):
     cli.add_command(_command)
 
