@@ -87,9 +87,16 @@ def _compare(ws, vs, mus, kappas, law, refs, label):
         "velocity": (np.array([r.velocity for r in refs]), speed),
         "compression_impulse": (np.array([r.compression_impulse for r in refs]), pscale),
         "dissipated": (np.array([r.dissipated for r in refs]), escale),
+        "work_compression_normal": (np.array([r.work_normal_compression for r in refs]), escale),
+        "work_restitution_normal": (np.array([r.work_normal_restitution for r in refs]), escale),
+        # the reference gives friction's work over the whole impact only
+        "work_tangential": (np.array([r.work_tangential for r in refs]), escale),
     }
     for name, (expected, scale) in want.items():
-        got = np.asarray(getattr(out, name), dtype=float)
+        if name == "work_tangential":
+            got = np.asarray(out.work_compression_tangential + out.work_restitution_tangential)
+        else:
+            got = np.asarray(getattr(out, name), dtype=float)
         assert got.shape == expected.shape, f"{name}: shape {got.shape}, want {expected.shape}"
         err = np.abs(got - expected)
         err = (err.max(axis=1) if err.ndim == 2 else err) / scale

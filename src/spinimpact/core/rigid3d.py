@@ -20,6 +20,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from . import rigid_slide as _slide
 from . import scalar_rigid as _scalar
 from .fused import HAVE_NUMBA, _njit
 
@@ -36,9 +37,25 @@ if HAVE_NUMBA:  # pragma: no branch - depends on the optional extra
     import numba
     from numba.extending import register_jitable
 
-    for _f in (_scalar._slide_rate, _scalar._step, _scalar._stick_ratio,
-               _scalar.reslide_direction, _scalar._event, _scalar._root, _scalar._linear,
-               _scalar._slide, _scalar.rigid_impact):  # fmt: skip
+    for _f in (
+        _slide._slide_rate,
+        _slide._step,
+        _slide._event,
+        _slide._rate,
+        _slide._root,
+        _slide._slide,
+        _slide._turn,
+        _slide._settle,
+        _slide._settled_slip,
+        _slide._stop_direction,
+        _slide._stop_close,
+        _slide._finish_stop,
+        _slide._impulse_work,
+        _scalar._stick_ratio,
+        _scalar.reslide_direction,
+        _scalar._linear,
+        _scalar.rigid_impact,
+    ):
         register_jitable(_f)
 
 #: The local error per step of the sliding phase, a fraction of the speed scale.
@@ -56,10 +73,10 @@ class ContactImpact(NamedTuple):
         The contact impulse (N s), tangential components first.
     compression_impulse : ndarray
         The normal impulse at the end of compression (N s).
-    work_compression, work_restitution : ndarray
+    work_compression_normal, work_restitution_normal : ndarray
         The normal force's work in compression (negative) and in restitution (J).
-    work_tangential : ndarray
-        Friction's work (J, never positive).
+    work_compression_tangential, work_restitution_tangential : ndarray
+        Friction's work in compression and in restitution (J, never positive).
     dissipated : ndarray
         The kinetic energy the impact takes, ``-p . (v_before + v_after) / 2`` (J;
         negative where the law creates energy).
@@ -78,9 +95,10 @@ class ContactImpact(NamedTuple):
     velocity: np.ndarray
     impulse: np.ndarray
     compression_impulse: np.ndarray
-    work_compression: np.ndarray
-    work_restitution: np.ndarray
-    work_tangential: np.ndarray
+    work_compression_normal: np.ndarray
+    work_restitution_normal: np.ndarray
+    work_compression_tangential: np.ndarray
+    work_restitution_tangential: np.ndarray
     dissipated: np.ndarray
     stop_impulse: np.ndarray
     sequence: np.ndarray
@@ -88,7 +106,7 @@ class ContactImpact(NamedTuple):
     ended: np.ndarray
 
 
-_FLOATS = 11  # v (3), p (3), p_c, w_c, w_r, w_t, p_stop
+_FLOATS = 12  # v (3), p (3), p_c, normal works (2), tangential works (2), p_stop
 
 
 def _one(w, v, mu, kappa, law, rtol, p_max):
@@ -107,10 +125,10 @@ def _rigid_kernel(w, s_w, v, s_v, mu, s_mu, kappa, s_kappa, law, rtol, p_max, s_
         )  # fmt: skip
         out[0, i], out[1, i], out[2, i], out[3, i], out[4, i] = r[0], r[1], r[2], r[3], r[4]
         out[5, i], out[6, i], out[7, i], out[8, i], out[9, i] = r[5], r[6], r[7], r[8], r[9]
-        out[10, i] = r[10]
-        codes[0, i] = r[11]
-        codes[1, i] = r[12]
-        codes[2, i] = 1 if r[13] else 0
+        out[10, i], out[11, i] = r[10], r[11]
+        codes[0, i] = r[12]
+        codes[1, i] = r[13]
+        codes[2, i] = 1 if r[14] else 0
 
 
 if HAVE_NUMBA:  # pragma: no branch
@@ -188,7 +206,7 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
         c = float(np.broadcast_to(p_max, shape).reshape(-1)[0])
         r = _one(w, v, m, k, code, float(rtol), c)
         out[:, 0] = r[:_FLOATS]
-        codes[:, 0] = r[11], r[12], int(r[13])
+        codes[:, 0] = r[12], r[13], int(r[14])
     else:  # pragma: no cover - depends on the optional extra
         from .._validation import require
 
@@ -203,9 +221,12 @@ def contact_impact(W, velocity, mu, kappa, law: str = "poisson", *, rtol: float 
     sequence = np.asarray(_scalar.SEQUENCES)[codes[0]]
     return ContactImpact(
         velocity=v1.reshape(*shape, 3), impulse=p.reshape(*shape, 3),
-        compression_impulse=out[6].reshape(shape), work_compression=out[7].reshape(shape),
-        work_restitution=out[8].reshape(shape), work_tangential=out[9].reshape(shape),
-        dissipated=dissipated.reshape(shape), stop_impulse=out[10].reshape(shape),
+        compression_impulse=out[6].reshape(shape),
+        work_compression_normal=out[7].reshape(shape),
+        work_restitution_normal=out[8].reshape(shape),
+        work_compression_tangential=out[9].reshape(shape),
+        work_restitution_tangential=out[10].reshape(shape),
+        dissipated=dissipated.reshape(shape), stop_impulse=out[11].reshape(shape),
         sequence=sequence.reshape(shape), steps=codes[1].reshape(shape),
         ended=ended.reshape(shape),
     )  # fmt: skip
@@ -217,6 +238,21 @@ def _cross_matrix(r: np.ndarray) -> np.ndarray:
     x, y, w = r[..., 0], r[..., 1], r[..., 2]
     return np.stack([np.stack([z, -w, y], -1), np.stack([w, z, -x], -1),
                      np.stack([-y, x, z], -1)], -2)  # fmt: skip
+
+
+def _inverse3(a: np.ndarray) -> np.ndarray:
+    """The inverse of each 3 x 3 matrix in ``(..., 3, 3)``, by its adjugate over its
+    determinant (several times faster than ``np.linalg.inv`` for many small matrices)."""
+    a = np.asarray(a, dtype=np.float64)
+    cof = np.empty(np.broadcast_shapes(a.shape, (3, 3)))
+    for i in range(3):
+        for j in range(3):
+            i1, i2 = (i + 1) % 3, (i + 2) % 3
+            j1, j2 = (j + 1) % 3, (j + 2) % 3
+            # the cofactor of a[i, j], placed transposed: the adjugate
+            cof[..., j, i] = a[..., i1, j1] * a[..., i2, j2] - a[..., i1, j2] * a[..., i2, j1]
+    det = np.sum(a[..., 0, :] * cof[..., :, 0], axis=-1)
+    return cof / det[..., None, None]
 
 
 def body_matrix(mass, inertia, offset) -> np.ndarray:
@@ -240,7 +276,7 @@ def body_matrix(mass, inertia, offset) -> np.ndarray:
     ndarray, shape (..., 3, 3)
     """
     r = _cross_matrix(np.asarray(offset, dtype=np.float64))
-    inverse = np.linalg.inv(np.asarray(inertia, dtype=np.float64))
+    inverse = _inverse3(inertia)
     m = np.asarray(mass, dtype=np.float64)[..., None, None]
     return np.eye(3) / m - r @ inverse @ r
 
@@ -251,7 +287,7 @@ def apply_impulse(mass, inertia, offset, velocity, spin, impulse) -> tuple[np.nd
     vectors ``(..., 3)``)."""
     p = np.asarray(impulse, dtype=np.float64)
     turn = np.cross(np.asarray(offset, dtype=np.float64), p)
-    moment = np.linalg.solve(np.asarray(inertia, dtype=np.float64), turn[..., None])[..., 0]
+    moment = np.einsum("...ij,...j->...i", _inverse3(inertia), turn)
     return velocity + p / np.asarray(mass, dtype=np.float64)[..., None], spin + moment
 
 

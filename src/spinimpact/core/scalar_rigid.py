@@ -14,8 +14,10 @@ Sliding (``|v_t| > 0``, ``s = v_t/|v_t|``)
     ``s`` an eigen-direction, the slip direction turns. With ``g(s) = W_tn - mu W_tt s``
     (the tangential block ``W_tt`` and the coupling ``W_tn``), the slip speed changes at
     ``d|v_t|/dpn = s . g(s)`` and the direction turns at ``s_perp . g(s) / |v_t|``. This
-    phase is integrated numerically (Dormand and Prince's 5(4) pair with a local error
-    below ``rtol`` times the speed scale per step); everything else is closed form.
+    phase is integrated numerically in ``tau = int dpn / |v_t|`` (Dormand and Prince's
+    8(5,3) pair, a local error below ``rtol`` times the speed scale per step:
+    :mod:`spinimpact.core.rigid_slide`) until the slip stops, the impact ends or the
+    direction has settled on one that ``W`` keeps; everything else is closed form.
 Stop
     When the slip vanishes, the contact sticks if the friction cone holds the impulse
     ratio that keeps ``v_t = 0``: ``c = W_tt^-1 W_tn`` and ``|c| <= mu``. It then sticks
@@ -36,8 +38,10 @@ compression ends at the first ``pn = p_c`` where ``vn = 0``; Newton's law ends a
 first ``pn >= p_c`` where ``vn = -kappa vn(0)``, Poisson's at ``pn = (1 + kappa) p_c``,
 Stronge's where the normal force's work in restitution is ``kappa^2`` times that of
 compression. The energy the impact takes from the bodies is
-``-p . (v_before + v_after) / 2`` exactly (rigid bodies), which the integrated works
-reproduce (``tests/core/test_rigid3d.py``).
+``-p . (v_before + v_after) / 2`` exactly (rigid bodies). The normal works are
+integrated; friction's work is the impulse's work less the normal work in a sliding phase
+whose direction turns, and integrated in closed form in the others
+(``tests/model/test_rigid.py`` checks their sum against the kinetic energy lost).
 
 The functions take and return floats (plain Python when called from Python; registered
 with Numba so that compiled code calls them too). Nothing is validated here.
@@ -49,6 +53,8 @@ import math
 
 import numpy as np
 
+from .rigid_slide import _MAX_STEPS, _N, _STOP, _slide
+
 __all__ = ["LAW_CODES", "SEQUENCES", "reslide_direction", "rigid_impact"]
 
 #: The restitution laws by code.
@@ -56,67 +62,6 @@ LAW_CODES = ("newton", "poisson", "energetic")
 
 #: The sequences of phases by code (``rigid_impact``'s ``sequence``).
 SEQUENCES = ("slide", "slide-stick", "slide-reslide", "stick")
-
-_SAFETY = 0.9
-_MAX_STEPS = 200_000
-_STOP = 1e-11  # the slip counts as stopped below this fraction of the speed scale
-
-# Dormand & Prince (1980), the 5(4) pair: stages, 5th-order weights (the last stage's row)
-# and the error weights (5th minus 4th order).
-_A2 = (1 / 5,)
-_A3 = (3 / 40, 9 / 40)
-_A4 = (44 / 45, -56 / 15, 32 / 9)
-_A5 = (19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729)
-_A6 = (9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656)
-_B = (35 / 384, 0.0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84)
-_E = (71 / 57600, 0.0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40)
-
-
-def _slide_rate(w, mu, y, k, row):
-    """The sliding phase's derivatives at state ``y`` into ``k[row]``: the contact
-    velocity (3), the normal and tangential works, the tangential impulse (2)."""
-    rho = math.hypot(y[0], y[1])
-    s1 = y[0] / rho
-    s2 = y[1] / rho
-    f1 = -mu * s1
-    f2 = -mu * s2
-    k[row, 0] = w[0] * f1 + w[1] * f2 + w[2]
-    k[row, 1] = w[1] * f1 + w[3] * f2 + w[4]
-    k[row, 2] = w[2] * f1 + w[4] * f2 + w[5]
-    k[row, 3] = y[2]
-    k[row, 4] = -mu * rho
-    k[row, 5] = f1
-    k[row, 6] = f2
-
-
-def _step(w, mu, y, h, k, out, tmp):
-    """One Dormand-Prince step of length ``h`` from ``y``: the 5th-order state into
-    ``out`` (``tmp`` a scratch array); the error estimate of each component in ``k[7]``."""
-    _slide_rate(w, mu, y, k, 0)
-    for i in range(7):
-        tmp[i] = y[i] + h * _A2[0] * k[0, i]
-    _slide_rate(w, mu, tmp, k, 1)
-    for i in range(7):
-        tmp[i] = y[i] + h * (_A3[0] * k[0, i] + _A3[1] * k[1, i])
-    _slide_rate(w, mu, tmp, k, 2)
-    for i in range(7):
-        tmp[i] = y[i] + h * (_A4[0] * k[0, i] + _A4[1] * k[1, i] + _A4[2] * k[2, i])
-    _slide_rate(w, mu, tmp, k, 3)
-    for i in range(7):
-        tmp[i] = y[i] + h * (_A5[0] * k[0, i] + _A5[1] * k[1, i] + _A5[2] * k[2, i]
-                             + _A5[3] * k[3, i])  # fmt: skip
-    _slide_rate(w, mu, tmp, k, 4)
-    for i in range(7):
-        tmp[i] = y[i] + h * (_A6[0] * k[0, i] + _A6[1] * k[1, i] + _A6[2] * k[2, i]
-                             + _A6[3] * k[3, i] + _A6[4] * k[4, i])  # fmt: skip
-    _slide_rate(w, mu, tmp, k, 5)
-    for i in range(7):
-        out[i] = y[i] + h * (_B[0] * k[0, i] + _B[2] * k[2, i] + _B[3] * k[3, i]
-                             + _B[4] * k[4, i] + _B[5] * k[5, i])  # fmt: skip
-    _slide_rate(w, mu, out, k, 6)
-    for i in range(7):
-        k[7, i] = h * (_E[0] * k[0, i] + _E[2] * k[2, i] + _E[3] * k[3, i] + _E[4] * k[4, i]
-                       + _E[5] * k[5, i] + _E[6] * k[6, i])  # fmt: skip
 
 
 def _stick_ratio(w):
@@ -167,47 +112,6 @@ def reslide_direction(w, mu):
     return s1, s2, s1 * g1 + s2 * g2
 
 
-def _event(law, kappa, vn0, wn_c, y):
-    """The end condition of ``law`` after compression (reaches 0 at the end)."""
-    if law == 0:
-        return y[2] + kappa * vn0
-    return (y[3] - wn_c) + kappa * kappa * wn_c
-
-
-def _root(w, mu, y, h, k, out, tmp, law, kappa, vn0, wn_c, compressing):
-    """The step length in ``(0, h]`` at which the event crosses zero (compression's end
-    ``vn = 0`` while ``compressing``, else the law's end), by the Illinois method on
-    re-taken steps; ``out`` holds the state there."""
-    a, b = 0.0, h
-    fa = y[2] if compressing else _event(law, kappa, vn0, wn_c, y)
-    _step(w, mu, y, b, k, out, tmp)
-    fb = out[2] if compressing else _event(law, kappa, vn0, wn_c, out)
-    side = 0
-    t = b
-    for _ in range(100):
-        if fb == fa:
-            break
-        t = b - fb * (b - a) / (fb - fa)
-        if not a < t < b:
-            t = 0.5 * (a + b)
-        _step(w, mu, y, t, k, out, tmp)
-        ft = out[2] if compressing else _event(law, kappa, vn0, wn_c, out)
-        if ft == 0.0 or b - a <= 4e-16 * h:
-            break
-        if (ft < 0.0) == (fa < 0.0):
-            a, fa = t, ft
-            if side == -1:
-                fb *= 0.5
-            side = -1
-        else:
-            b, fb = t, ft
-            if side == 1:
-                fa *= 0.5
-            side = 1
-    _step(w, mu, y, t, k, out, tmp)
-    return t
-
-
 def rigid_impact(w11, w12, w1n, w22, w2n, wnn, v1, v2, vn, mu, kappa, law, rtol, p_max):
     """One impact of a rigid body at one point contact, by Keller's method (module notes).
 
@@ -223,7 +127,8 @@ def rigid_impact(w11, w12, w1n, w22, w2n, wnn, v1, v2, vn, mu, kappa, law, rtol,
         0 Newton, 1 Poisson, 2 Stronge's energetic law (:data:`LAW_CODES`).
     rtol : float
         The local error allowed per step of the sliding phase, a fraction of the speed
-        scale (``1e-13`` gives about ``1e-12`` at the end: ``tests/core/test_rigid3d.py``).
+        scale (``1e-13`` keeps the rebound within ``1e-12`` of a run at ``1e-15``:
+        ``tests/core/test_rigid3d.py``).
     p_max : float
         Stop at this normal impulse if the impact has not ended before (N s; ``inf`` for
         the whole impact): the state part-way, for the slip's history.
@@ -232,25 +137,29 @@ def rigid_impact(w11, w12, w1n, w22, w2n, wnn, v1, v2, vn, mu, kappa, law, rtol,
     -------
     tuple
         ``(v1, v2, vn)`` after, the impulse ``(p1, p2, pn)``, the compression impulse
-        ``p_c``, the normal works of compression and restitution and the tangential work
-        (J), the normal impulse at which the slip stopped (``nan`` if it did not), the
-        sequence code (:data:`SEQUENCES`), the number of steps taken, and whether the
-        impact ended (``False``: no separation, or the step limit).
+        ``p_c``, the normal works of compression and restitution, the tangential works of
+        compression and restitution (J), the normal impulse at which the slip stopped
+        (``nan`` if it did not), the sequence code (:data:`SEQUENCES`), the number of
+        steps taken, and whether the impact ended (``False``: no separation, or the step
+        limit).
     """
     w = np.empty(6)
     w[0], w[1], w[2], w[3], w[4], w[5] = w11, w12, w1n, w22, w2n, wnn
     y = np.zeros(7)  # v1, v2, vn, normal work, tangential work, p1, p2
     y[0], y[1], y[2] = v1, v2, vn
     scale = math.sqrt(v1 * v1 + v2 * v2 + vn * vn)
-    state = np.array([0.0, 0.0, math.nan, math.nan, math.nan])  # p, compressed, p_c, w_c, stop
-    k = np.empty((8, 7))
-    out = np.empty(7)
-    tmp = np.empty(7)
+    # p, compressed, p_c, normal and tangential works at p_c, stop
+    state = np.array([0.0, 0.0, math.nan, math.nan, math.nan, math.nan])
+    k = np.empty((15, _N))
+    z = np.empty(_N)
+    out = np.empty(_N)
+    c = np.empty(5)
     steps = 0
     ended = False
     first = -1  # the first phase: 0 slide, 1 stick
     second = -1  # the phase after a stop, if any
-    for _ in range(4):  # at most: a slide, a stop, a closed-form phase
+    settled = False
+    for _ in range(5):  # at most: a slide, a settled slide, a stop, a closed-form phase
         rho = math.hypot(y[0], y[1])
         if rho > _STOP * scale:
             if first < 0:
@@ -258,13 +167,15 @@ def rigid_impact(w11, w12, w1n, w22, w2n, wnn, v1, v2, vn, mu, kappa, law, rtol,
             s1, s2 = y[0] / rho, y[1] / rho
             g1 = w[2] - mu * (w[0] * s1 + w[1] * s2)
             g2 = w[4] - mu * (w[1] * s1 + w[3] * s2)
-            if abs(s1 * g2 - s2 * g1) > 1e-14 * (abs(g1) + abs(g2)):
-                # the slip direction turns: integrate to the stop or the end
-                steps, ended = _slide(w, mu, kappa, law, rtol, p_max, scale, y, state, k,
-                                      out, tmp, steps, vn)  # fmt: skip
+            if not settled and abs(s1 * g2 - s2 * g1) > 1e-14 * (abs(g1) + abs(g2)):
+                # the slip direction turns: integrate to the stop, the end, or until it
+                # has settled on a direction W keeps (then the slide goes on along it)
+                steps, ended, settled = _slide(w, mu, kappa, law, rtol, p_max, scale, y,
+                                               state, k, z, out, c, steps, vn)  # fmt: skip
                 if ended or state[0] >= p_max or steps >= _MAX_STEPS:
                     break
                 continue
+            settled = False
             r1, r2, lam, f1, f2 = s1, s2, s1 * g1 + s2 * g2, -mu * s1, -mu * s2
         else:  # stopped (or no slip at the start): stick, or slide along W's direction
             rho = 0.0
@@ -287,7 +198,9 @@ def rigid_impact(w11, w12, w1n, w22, w2n, wnn, v1, v2, vn, mu, kappa, law, rtol,
     compressed = state[1] > 0.0
     wn_c = state[3] if compressed else y[3]
     wn_r = y[3] - state[3] if compressed else 0.0
-    return (y[0], y[1], y[2], y[5], y[6], state[0], state[2], wn_c, wn_r, y[4], state[4],
+    wt_c = state[5] if compressed else y[4]
+    wt_r = y[4] - state[5] if compressed else 0.0
+    return (y[0], y[1], y[2], y[5], y[6], state[0], state[2], wn_c, wn_r, wt_c, wt_r, state[4],
             sequence, steps, ended)  # fmt: skip
 
 
@@ -299,11 +212,12 @@ def _linear(w, mu, kappa, law, p_max, y, state, r1, r2, rho, lam, f1, f2, vn0):
     p_s, vn_s, wn_s = state[0], y[2], y[3]
     slope = w[5] + w[2] * f1 + w[4] * f2
     compressed = state[1] > 0.0
-    p_c, wn_c = state[2], state[3]
+    p_c, wn_c, wt_c = state[2], state[3], state[5]
     p_end = math.inf
     if not compressed and slope > 0.0:
         p_c = p_s - vn_s / slope
         wn_c = wn_s - 0.5 * vn_s * vn_s / slope
+        wt_c = y[4] - mu * (rho * (p_c - p_s) + 0.5 * lam * (p_c - p_s) ** 2)
         compressed = True
     if compressed and slope > 0.0:
         if law == 1:
@@ -335,85 +249,7 @@ def _linear(w, mu, kappa, law, p_max, y, state, r1, r2, rho, lam, f1, f2, vn0):
     y[6] += f2 * d
     state[0] = p_s + d
     if compressed and p_c <= state[0]:
-        state[1], state[2], state[3] = 1.0, p_c, wn_c
+        state[1], state[2], state[3], state[5] = 1.0, p_c, wn_c, wt_c
     if stopped:
         state[4] = state[0]
     return ended, stopped
-
-
-def _slide(w, mu, kappa, law, rtol, p_max, scale, y, state, k, out, tmp, steps, vn0):
-    """Integrate the sliding phase whose direction turns, from ``y`` at ``state[0]``, to the
-    law's end, ``p_max`` or the slip's stop (finished along its last direction); returns
-    ``(steps, ended)`` with ``y`` and ``state`` advanced."""
-    p = state[0]
-    compressed = state[1] > 0.0
-    p_c, wn_c = state[2], state[3]
-    p_unit = scale / (w[0] + w[3] + w[5])  # W p then errs by at most rtol * scale
-    tol_v = rtol * scale
-    h = 0.01 * abs(y[2]) / w[5]
-    ended = False
-    while steps < _MAX_STEPS:
-        rho = math.hypot(y[0], y[1])
-        if rho <= _STOP * scale:
-            break
-        if compressed and law == 1 and p >= (1.0 + kappa) * p_c:
-            ended = True
-            break
-        if p >= p_max:
-            break
-        s1, s2 = y[0] / rho, y[1] / rho
-        g1 = w[2] - mu * (w[0] * s1 + w[1] * s2)
-        g2 = w[4] - mu * (w[1] * s1 + w[3] * s2)
-        a = s1 * g1 + s2 * g2  # d|v_t|/dpn
-        if a < 0.0:
-            h = min(h, 0.5 * rho / -a)  # at most halve the slip in a step
-        if compressed and law == 1:
-            h = min(h, (1.0 + kappa) * p_c - p)
-        h = min(h, p_max - p)
-        _step(w, mu, y, h, k, out, tmp)
-        steps += 1
-        err = 0.0
-        for i in range(7):
-            sc = tol_v if i < 3 else (tol_v * p_unit if i < 5 else rtol * p_unit)
-            err = max(err, abs(k[7, i]) / sc)
-        if err > 1.0:
-            h *= max(0.2, _SAFETY * err**-0.2)
-            continue
-        if not compressed and out[2] >= 0.0:
-            h = _root(w, mu, y, h, k, out, tmp, law, kappa, vn0, wn_c, True)
-            p += h
-            y[:] = out
-            compressed, p_c, wn_c = True, p, y[3]
-            if law != 1 and _event(law, kappa, vn0, wn_c, y) >= 0.0:
-                ended = True  # kappa = 0 (or kappa^2 below the smallest float)
-                break
-            continue
-        if compressed and law != 1 and _event(law, kappa, vn0, wn_c, out) >= 0.0:
-            h = _root(w, mu, y, h, k, out, tmp, law, kappa, vn0, wn_c, False)
-            p += h
-            y[:] = out
-            ended = True
-            break
-        p += h
-        y[:] = out
-        h *= min(5.0, _SAFETY * max(err, 1e-10) ** -0.2)
-    if not ended and p < p_max and steps < _MAX_STEPS:
-        # The slip stopped: finish it along its last direction (a step of rho/|a|).
-        rho = math.hypot(y[0], y[1])
-        s1, s2 = y[0] / rho, y[1] / rho
-        g1 = w[2] - mu * (w[0] * s1 + w[1] * s2)
-        g2 = w[4] - mu * (w[1] * s1 + w[3] * s2)
-        a = s1 * g1 + s2 * g2
-        d = rho / -a if a < 0.0 else 0.0
-        y[2] += d * (w[5] - mu * (w[2] * s1 + w[4] * s2))
-        y[3] += d * y[2]
-        y[4] -= mu * 0.5 * rho * d
-        y[5] -= mu * s1 * d
-        y[6] -= mu * s2 * d
-        y[0] = y[1] = 0.0
-        p += d
-        state[4] = p
-    state[0] = p
-    if compressed:
-        state[1], state[2], state[3] = 1.0, p_c, wn_c
-    return steps, ended

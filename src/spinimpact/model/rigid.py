@@ -186,9 +186,10 @@ class RigidImpact(Result):
     compression_impulse: Array  #: the normal impulse at the end of compression, N s
     stop_impulse: Array  #: the normal impulse at which the slip stopped (NaN if never), N s
     regime: Array  #: the phases: slide, slide-stick, slide-reslide or stick
-    work_compression: Array  #: the normal force's work in compression, J (<= 0)
-    work_restitution: Array  #: the normal force's work in restitution, J
-    work_tangential: Array  #: friction's work, J (<= 0)
+    work_compression_normal: Array  #: the normal force's work in compression, J (<= 0)
+    work_restitution_normal: Array  #: the normal force's work in restitution, J
+    work_compression_tangential: Array  #: friction's work in compression, J (<= 0)
+    work_restitution_tangential: Array  #: friction's work in restitution, J (<= 0)
     dissipated_energy: Array  #: kinetic energy lost, J (< 0: the law created energy)
     newton_restitution: Array  #: ``-v_n^+ / v_n^-``
     poisson_restitution: Array  #: restitution over compression impulse
@@ -325,7 +326,9 @@ def solve_contact(matrix: Any, velocity: Any, *, mu: Any, kappa: Any, law: str =
 def _finish(result, vn_before, impulse, before, after, v1, w1, law) -> RigidImpact:
     pn = result.impulse[..., 2]
     with np.errstate(divide="ignore", invalid="ignore"):
-        energetic = np.sqrt(np.maximum(-result.work_restitution / result.work_compression, 0))
+        energetic = np.sqrt(
+            np.maximum(-result.work_restitution_normal / result.work_compression_normal, 0)
+        )
         newton = -result.velocity[..., 2] / vn_before
         poisson = pn / result.compression_impulse - 1.0
     state = State3(*(freeze(v1[..., k]) for k in range(3)), *(freeze(w1[..., k]) for k in range(3)))
@@ -334,9 +337,10 @@ def _finish(result, vn_before, impulse, before, after, v1, w1, law) -> RigidImpa
         contact_after=_vector(after), normal_impulse=freeze(pn),
         compression_impulse=freeze(result.compression_impulse),
         stop_impulse=freeze(result.stop_impulse), regime=freeze(result.sequence),
-        work_compression=freeze(result.work_compression),
-        work_restitution=freeze(result.work_restitution),
-        work_tangential=freeze(result.work_tangential),
+        work_compression_normal=freeze(result.work_compression_normal),
+        work_restitution_normal=freeze(result.work_restitution_normal),
+        work_compression_tangential=freeze(result.work_compression_tangential),
+        work_restitution_tangential=freeze(result.work_restitution_tangential),
         dissipated_energy=freeze(result.dissipated), newton_restitution=freeze(newton),
         poisson_restitution=freeze(poisson), energetic_restitution=freeze(energetic),
         creates_energy=freeze(result.dissipated < 0), law=law,

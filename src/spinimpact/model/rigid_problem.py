@@ -117,9 +117,11 @@ RIGID = register(
             "normal_impulse": "N s",
             "compression_impulse": "N s",
             "stop_impulse": "N s",
-            "work_compression": "J",
-            "work_restitution": "J",
-            "work_tangential": "J",
+            **{
+                f"work_{phase}_{part}": "J"
+                for phase in ("compression", "restitution")
+                for part in ("normal", "tangential")
+            },  # fmt: skip
         },  # fmt: skip
         regimes=("slide", "slide-stick", "slide-reslide", "stick"),
     )
