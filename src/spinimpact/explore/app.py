@@ -47,8 +47,14 @@ def tables(s: st.Setting) -> tuple[Table, ...]:
 
             out = planar_tables(s.result)
     declared = problem(s.problem)
-    values = {k: v for k, v in s.inputs.items() if k in declared.names}
-    return out + result_tables(declared, values, s.result)[1:]
+    if s.law is None:
+        values = {k: v for k, v in s.inputs.items() if k in declared.names}
+        return out + result_tables(declared, values, s.result)[1:]
+    # under a tangential law the result has columns of its own: each with its unit
+    rows = tuple(
+        (name, _text(value), declared.unit(name) or "") for name, value in _columns(s).items()
+    )
+    return (Table("result", "Result", ("column", "value", "unit"), rows),)
 
 
 def _columns(s: st.Setting) -> dict[str, Any]:
@@ -162,9 +168,8 @@ def clicked(values: dict[str, str], x: float, y: float) -> dict[str, str] | None
         out["spin"] = f"{y * vn / radius * 60 / (2 * math.pi):.6g}"
     else:
         vn, radius = abs(float(s.result.normal_velocity_before)), float(s.body.radius)
-        if x < 0:
-            x, y = -x, -y
-            out["heading"] = f"{(float(values.get('heading', '0')) + 180) % 360:.6g}"
+        if x < 0:  # the map is drawn along the ball's heading
+            return None
         out["spin"] = f"{-y * vn / radius * 60 / (2 * math.pi):.6g}"
         out["spin_axis"] = "topspin"
     speed = vn * math.hypot(1.0, x) / SPEED_UNITS[values.get("speed_unit", "m/s")]

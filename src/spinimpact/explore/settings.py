@@ -13,11 +13,12 @@ message keyed by the field's name, to be shown beside it.
 
 Examples
 --------
->>> found = evaluate({"problem": "paper", "speed": "5", "angle": "53.13010235415598"})
+>>> found = evaluate({"problem": "paper", "speed": "5", "angle": "53.13010235415598",
+...                   "spin": "95.49296585513721"})  # 3 m/s along, 4 m/s down, 10 rad/s
 >>> found.errors
 {}
->>> round(float(found.setting.result.after.vx), 6)
-2.85714
+>>> round(float(found.setting.result.after.vx), 5)
+1.85714
 >>> evaluate({"problem": "paper", "mu": "-1"}).errors["mu"]
 'mu must be >= 0, got -1.0'
 """

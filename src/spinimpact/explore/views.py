@@ -270,11 +270,12 @@ def regime_map(s: Any) -> dict[str, Any]:
     colours = ["#9ecae1", "#fdae6b", "#c7e9c0", "#dadaeb"]
     k = len(names)
     scale = [[(i + (j % 2)) / k, colours[i]] for i in range(k) for j in (0, 1)]
+    ahead = a >= 0  # the page's incidences travel along +x (a ball: along its heading)
     heat = {
         "type": "heatmap",
-        "x": a.tolist(),
+        "x": a[ahead].tolist(),
         "y": b.tolist(),
-        "z": f["regime"].tolist(),
+        "z": f["regime"][:, ahead].tolist(),
         "zmin": -0.5,
         "zmax": k - 0.5,
         "colorscale": scale,
@@ -296,7 +297,7 @@ def regime_map(s: Any) -> dict[str, Any]:
     layout = _layout(
         title,
         showlegend=False,
-        xaxis={"title": {"text": "vx/|vy|"}, "range": [-_EXTENT, _EXTENT]},
+        xaxis={"title": {"text": "vx/|vy|"}, "range": [0, _EXTENT]},
         yaxis={"title": {"text": "R ω/|vy|"}, "range": [-_EXTENT, _EXTENT]},
     )
     return {"data": [heat, mark], "layout": layout}
