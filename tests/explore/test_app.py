@@ -39,9 +39,7 @@ def test_the_process_is_the_results_own_history():
     assert line["x"] == h.tau.tolist() and line["y"] == h.slip.tolist()
 
 
-@pytest.mark.parametrize(
-    ("kind", "point"), [("paper", (1.5, -0.7)), ("sphere", (0.4, 1.2))]
-)
+@pytest.mark.parametrize(("kind", "point"), [("paper", (1.5, -0.7)), ("sphere", (0.4, 1.2))])
 def test_a_click_on_the_map_moves_the_incidence_there(kind, point):
     values = st.defaults(kind)
     moved = app.clicked(values, *point)

@@ -68,21 +68,20 @@ def _field(f: st.Field, dcc: Any, html: Any) -> Any:
     )
 
 
-def _html_table(t: Any, html: Any, changed: bool = False) -> Any:
-    head = html.Tr([html.Th(c) for c in t.columns])
+def _raw_table(t: Any, changed: bool = False) -> str:
+    """A table as one HTML string: the page renders it as one element, not a component a cell."""
+    from html import escape
+
+    head = "".join(f"<th>{escape(c)}</th>" for c in t.columns)
     rows = []
     for row in t.rows:
-        cells = [html.Td(x) for x in row]
+        cells = [f"<td>{escape(x)}</td>" for x in row]
         if changed and row[-1] not in ("", "0"):
-            cells[-1] = html.Td(row[-1], className="changed")
-        rows.append(html.Tr(cells))
-    return html.Div(
-        [
-            html.H4(t.title),
-            html.Table(
-                [html.Thead(head), html.Tbody(rows)], className="report", id=f"table-{t.key}"
-            ),
-        ]
+            cells[-1] = f'<td class="changed">{escape(row[-1])}</td>'
+        rows.append("<tr>" + "".join(cells) + "</tr>")
+    return (
+        f'<h4>{escape(t.title)}</h4><table class="report" id="table-{t.key}"><thead><tr>'
+        f"{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
     )
 
 
@@ -162,67 +161,59 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
     values_out = [Output(f"in-{n}", "value") for n in _NAMES]
     rows_out = [Output(f"row-{n}", "style") for n in _NAMES]
 
+    errors_out = [Output(f"err-{n}", "children") for n in _NAMES]
+    views_out = [Output(k, "figure") for k in ("bounce", "process", "map")]
+    views_out += [Output("tables", "children"), Output("command", "children")]
+
     @app.callback(
         Output("url", "search"),
         *values_out,
         *rows_out,
+        *errors_out,
+        *views_out,
+        Output("current", "data"),
         Input("url", "search"),
         Input("map", "clickData"),
         *values_in,
+        running=[(Output("status", "children"), "computing…", "")],
     )
-    def sync(search: str | None, click: Any, *given: str) -> Any:
+    def step(search: str | None, click: Any, *given: str) -> Any:
+        """One round trip a change: the address and the inputs agree, then every view."""
         values = dict(zip(_NAMES, given, strict=True))
-        keep = [no_update] * len(_NAMES)
+        address: Any = None
+        shown: Any = [no_update] * len(_NAMES)
         if ctx.triggered_id in (None, "url"):  # the address (first load, Back, a link)
             values = st.from_query(search or "")
-            return [no_update, *(values[n] for n in _NAMES), *_styles(values)]
-        if ctx.triggered_id == "map":
+            address, shown = no_update, [values[n] for n in _NAMES]
+        elif ctx.triggered_id == "map":
             point = (click or {}).get("points", [{}])[0]
             moved = clicked(values, float(point.get("x", "nan")), float(point.get("y", "nan")))
             if moved is None:
-                return [no_update, *keep, *_styles(values)]
-            return [st.to_query(moved), *(moved[n] for n in _NAMES), *_styles(moved)]
-        if ctx.triggered_id == "in-problem":
+                return [no_update] * (3 * len(_NAMES) + 7)
+            values, shown = moved, [moved[n] for n in _NAMES]
+        elif ctx.triggered_id == "in-problem":
             old = st.from_query(search or "").get("problem", "paper")
             for name, text in st.defaults(old).items():  # untouched defaults follow the problem
                 if name != "problem" and values[name] == text:
                     values[name] = st.defaults(values["problem"])[name]
-            return [st.to_query(values), *(values[n] for n in _NAMES), *_styles(values)]
-        return [st.to_query(values), *keep, *_styles(values)]
+            shown = [values[n] for n in _NAMES]
+        if address is None:
+            address = st.to_query(values)
+        out = update(values)
+        errors = [out["errors"].get(n, "") for n in _NAMES]
+        head = [address, *shown, *_styles(values), *errors]
+        if out["errors"]:  # the last good views stay
+            return [*head, *[no_update] * 6]
+        f = out["figures"]
+        body = dcc.Markdown(
+            "\n".join(_raw_table(t) for t in out["tables"]), dangerously_allow_html=True
+        )
+        data = out["data"]
+        return [*head, f["bounce"], f["process"], f["map"], body, data["command"], data]
 
     def _styles(values: dict[str, str]) -> list[dict[str, str]]:
         shown = set(st.relevant(values))
         return [{} if n in shown else {"display": "none"} for n in _NAMES]
-
-    errors_out = [Output(f"err-{n}", "children") for n in _NAMES]
-
-    @app.callback(
-        *errors_out,
-        Output("bounce", "figure"),
-        Output("process", "figure"),
-        Output("map", "figure"),
-        Output("tables", "children"),
-        Output("command", "children"),
-        Output("current", "data"),
-        *values_in,
-        running=[(Output("status", "children"), "computing…", "")],
-    )
-    def compute(*given: str) -> Any:
-        out = update(dict(zip(_NAMES, given, strict=True)))
-        errors = [out["errors"].get(n, "") for n in _NAMES]
-        if out["errors"]:  # the last good views stay
-            return [*errors, *[no_update] * 6]
-        f = out["figures"]
-        body = [_html_table(t, html) for t in out["tables"]]
-        return [
-            *errors,
-            f["bounce"],
-            f["process"],
-            f["map"],
-            body,
-            out["data"]["command"],
-            out["data"],
-        ]
 
     @app.callback(
         Output("flight", "figure"),
@@ -249,7 +240,9 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
     def compare(pinned: dict | None, data: dict | None) -> Any:
         if not pinned or not data:
             return []
-        return _html_table(compare_table(pinned, data), html, changed=True)
+        return dcc.Markdown(
+            _raw_table(compare_table(pinned, data), changed=True), dangerously_allow_html=True
+        )
 
     @app.callback(
         Output("download", "data"),
