@@ -25,8 +25,7 @@ def test_without_dash_the_command_names_the_extra():
         "import sys; sys.modules['dash'] = None\n"  # an import of dash now fails
         "from spinimpact.cli import main; main(['explore', '--port', '0'])"
     )
-    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=60)  # fmt: skip
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert run.returncode == 2
     lines = run.stderr.strip().splitlines()
     assert len(lines) == 1 and "pip install 'spinimpact[explore]'" in lines[0], run.stderr
@@ -36,8 +35,13 @@ def test_without_dash_the_command_names_the_extra():
 def test_it_serves_on_localhost_and_stops_cleanly_on_ctrl_c():
     pytest.importorskip("dash", reason="needs the [explore] extra")
     env = dict(os.environ, PYTHONUNBUFFERED="1")
-    proc = subprocess.Popen([sys.executable, "-m", "spinimpact", "explore", "--port", "0"],
-                            stderr=subprocess.PIPE, stdout=subprocess.PIPE, text=True, env=env)  # fmt: skip
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "spinimpact", "explore", "--port", "0"],
+        stderr=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
     try:
         line = proc.stderr.readline()
         found = re.search(r"http://127\.0\.0\.1:(\d+)/", line)

@@ -19,8 +19,18 @@ import threading
 import numpy as np
 import pytest
 
-from spinimpact import (BALLS, GROUNDS, Body, Pendulum, PlanarBody, Walton, solve,
-                        solve_pendulum, solve_planar, solve_sphere)  # fmt: skip
+from spinimpact import (
+    BALLS,
+    GROUNDS,
+    Body,
+    Pendulum,
+    PlanarBody,
+    Walton,
+    solve,
+    solve_pendulum,
+    solve_planar,
+    solve_sphere,
+)
 from spinimpact.explore import settings as st
 
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
@@ -59,8 +69,9 @@ def browser():
         pytest.skip("no chromium installed (.ci/run installs Debian's chromium)")
     sync_api = pytest.importorskip("playwright.sync_api", reason="needs the playwright package")
     with sync_api.sync_playwright() as p:
-        chromium = p.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox",
-                                                                     "--disable-gpu"])  # fmt: skip
+        chromium = p.chromium.launch(
+            executable_path=CHROMIUM, args=["--no-sandbox", "--disable-gpu"]
+        )
         yield chromium
         chromium.close()
 
@@ -72,34 +83,61 @@ def page(browser):
     page.errors = []
     page.on("console", lambda m: page.errors.append(m.text) if m.type == "error" else None)
     page.on("pageerror", lambda e: page.errors.append(str(e)))
-    page.on("request", lambda r: None if r.url.startswith("http://127.0.0.1") else
-            page.errors.append(f"a request off this computer: {r.url}"))  # fmt: skip
+    page.on(
+        "request",
+        lambda r: (
+            None
+            if r.url.startswith("http://127.0.0.1")
+            else page.errors.append(f"a request off this computer: {r.url}")
+        ),
+    )
     yield page
     context.close()
 
 
 def draw(rng: random.Random, kind: str) -> dict[str, str]:
     """Random values for every field of ``kind`` (some may make an impossible setting)."""
-    v = {"problem": kind, "speed": f"{rng.uniform(0.5, 30):.4g}",
-         "speed_unit": rng.choice(list(UNITS)), "angle": f"{rng.uniform(5, 85):.4g}",
-         "spin": f"{rng.uniform(-3000, 3000):.5g}", "mu": f"{rng.uniform(0, 1):.3g}",
-         "kappa": f"{rng.uniform(0, 1):.3g}"}  # fmt: skip
+    v = {
+        "problem": kind,
+        "speed": f"{rng.uniform(0.5, 30):.4g}",
+        "speed_unit": rng.choice(list(UNITS)),
+        "angle": f"{rng.uniform(5, 85):.4g}",
+        "spin": f"{rng.uniform(-3000, 3000):.5g}",
+        "mu": f"{rng.uniform(0, 1):.3g}",
+        "kappa": f"{rng.uniform(0, 1):.3g}",
+    }
     if kind == "paper":
-        v |= {"body": rng.choice(st.FIELDS["body"].choices), "radius": f"{rng.uniform(0.02, 0.2):.3g}",
-              "mass": f"{rng.uniform(0.1, 3):.3g}", "tangential": rng.choice(["rigid", "walton"]),
-              "beta0": f"{rng.uniform(-1, 1):.3g}"}  # fmt: skip
+        v |= {
+            "body": rng.choice(st.FIELDS["body"].choices),
+            "radius": f"{rng.uniform(0.02, 0.2):.3g}",
+            "mass": f"{rng.uniform(0.1, 3):.3g}",
+            "tangential": rng.choice(["rigid", "walton"]),
+            "beta0": f"{rng.uniform(-1, 1):.3g}",
+        }
     if kind == "sphere":
-        v |= {"ball": rng.choice(["custom", "tennis", "golf"]), "surface": rng.choice(["custom", "clay", "table"]),
-              "heading": f"{rng.uniform(-180, 180):.4g}",
-              "spin_axis": rng.choice(["topspin", "backspin", "sidespin", "0.3,-1,2"]),
-              "body": rng.choice(["solid-sphere", "spherical-shell"]), "radius": "0.04",
-              "mass": "0.1", "tangential": rng.choice(["rigid", "rigid", "walton"]), "beta0": "0.3"}  # fmt: skip
+        v |= {
+            "ball": rng.choice(["custom", "tennis", "golf"]),
+            "surface": rng.choice(["custom", "clay", "table"]),
+            "heading": f"{rng.uniform(-180, 180):.4g}",
+            "spin_axis": rng.choice(["topspin", "backspin", "sidespin", "0.3,-1,2"]),
+            "body": rng.choice(["solid-sphere", "spherical-shell"]),
+            "radius": "0.04",
+            "mass": "0.1",
+            "tangential": rng.choice(["rigid", "rigid", "walton"]),
+            "beta0": "0.3",
+        }
         if v["surface"] != "custom" and rng.random() < 0.5:
             v |= {"mu": "", "kappa": ""}  # from the preset
     if kind in ("planar", "pendulum"):
-        v |= {"shape": rng.choice(["rod", "block"]), "length": f"{rng.uniform(0.2, 2):.3g}",
-              "width": "0.3", "height": "0.1", "orientation": f"{rng.uniform(10, 80):.3g}",
-              "law": rng.choice(["poisson", "newton", "energetic"]), "mass": "2"}  # fmt: skip
+        v |= {
+            "shape": rng.choice(["rod", "block"]),
+            "length": f"{rng.uniform(0.2, 2):.3g}",
+            "width": "0.3",
+            "height": "0.1",
+            "orientation": f"{rng.uniform(10, 80):.3g}",
+            "law": rng.choice(["poisson", "newton", "energetic"]),
+            "mass": "2",
+        }
     if kind == "pendulum":
         v["spin"] = f"{-rng.uniform(5, 200):.4g}"
     return v
@@ -140,8 +178,9 @@ def set_through_the_page(page, values: dict[str, str]) -> None:
             if not box.is_checked():
                 box.check()
                 if name == "problem":  # the page fills the new problem's defaults: wait
-                    page.wait_for_function("k => location.search.startsWith('?problem=' + k)",
-                                           arg=values[name])  # fmt: skip
+                    page.wait_for_function(
+                        "k => location.search.startsWith('?problem=' + k)", arg=values[name]
+                    )
         elif page.input_value(f"#in-{name}") != values[name]:
             page.fill(f"#in-{name}", values[name])
             page.press(f"#in-{name}", "Enter")
@@ -151,12 +190,17 @@ def wait_for(page, values: dict[str, str]) -> st.Setting:
     """Wait until the page shows ``values``' impact (its command line), else say what it shows."""
     s = st.evaluate(values).setting
     try:
-        page.wait_for_function("c => document.querySelector('#command')?.textContent === c",
-                               arg=s.command, timeout=30_000)  # fmt: skip
+        page.wait_for_function(
+            "c => document.querySelector('#command')?.textContent === c",
+            arg=s.command,
+            timeout=30_000,
+        )
     except Exception as exc:  # a timeout: what the page shows instead
         errors = page.locator(".error").all_inner_texts()
-        raise AssertionError(f"the page shows {page.inner_text('#command')!r} at {page.url} "
-                             f"with messages {[e for e in errors if e]}, not {s.command!r}") from exc  # fmt: skip
+        raise AssertionError(
+            f"the page shows {page.inner_text('#command')!r} at {page.url} "
+            f"with messages {[e for e in errors if e]}, not {s.command!r}"
+        ) from exc
     return s
 
 
@@ -190,21 +234,40 @@ def expected(values: dict[str, str], inputs: dict) -> tuple[dict, object]:
     law = Walton(float(v["beta0"])) if v.get("tangential") == "walton" else None
     if kind == "paper":
         body = Body.preset(v["body"], mass=float(v["mass"]), radius=float(v["radius"]))
-        res = solve(body, inputs["vx"], inputs["vy"], inputs["omega"], mu=mu, kappa=kappa,
-                    tangential=law)  # fmt: skip
+        res = solve(
+            body, inputs["vx"], inputs["vy"], inputs["omega"], mu=mu, kappa=kappa, tangential=law
+        )
     elif kind == "sphere":
-        axis = {"topspin": np.cross([0, 1, 0], e), "backspin": -np.cross([0, 1, 0], e),
-                "sidespin": np.array([0.0, 1.0, 0.0])}.get(v["spin_axis"])  # fmt: skip
+        axis = {
+            "topspin": np.cross([0, 1, 0], e),
+            "backspin": -np.cross([0, 1, 0], e),
+            "sidespin": np.array([0.0, 1.0, 0.0]),
+        }.get(v["spin_axis"])
         if axis is None:
             axis = np.array([float(x) for x in v["spin_axis"].split(",")])
         spin = float(v["spin"]) * RPM * axis / np.linalg.norm(axis)
-        typed = {k: typed[k] for k in ("mu", "kappa")} | {"vx": vel[0], "vy": vel[1], "vz": vel[2],
-                 "wx": spin[0], "wy": spin[1], "wz": spin[2]}  # fmt: skip
-        body = (BALLS[v["ball"]].body if v["ball"] != "custom" else
-                Body.preset(v["body"], mass=float(v["mass"]), radius=float(v["radius"])))  # fmt: skip
+        typed = {k: typed[k] for k in ("mu", "kappa")} | {
+            "vx": vel[0],
+            "vy": vel[1],
+            "vz": vel[2],
+            "wx": spin[0],
+            "wy": spin[1],
+            "wz": spin[2],
+        }
+        body = (
+            BALLS[v["ball"]].body
+            if v["ball"] != "custom"
+            else Body.preset(v["body"], mass=float(v["mass"]), radius=float(v["radius"]))
+        )
         velocity = [inputs["vx"], inputs["vy"], inputs["vz"]]
-        res = solve_sphere(body, velocity, [inputs["wx"], inputs["wy"], inputs["wz"]], mu=mu,
-                           kappa=kappa, tangential=law)  # fmt: skip
+        res = solve_sphere(
+            body,
+            velocity,
+            [inputs["wx"], inputs["wy"], inputs["wz"]],
+            mu=mu,
+            kappa=kappa,
+            tangential=law,
+        )
     else:
         angle = math.radians(float(v["orientation"]))
         m = float(v["mass"])
@@ -212,11 +275,16 @@ def expected(values: dict[str, str], inputs: dict) -> tuple[dict, object]:
             body = Pendulum.rod(mass=m, length=float(v["length"]), angle=angle)
             res = solve_pendulum(body, inputs["omega"], mu=mu, kappa=kappa, law=v["law"])
         else:
-            body = (PlanarBody.rod(mass=m, length=float(v["length"]), angle=angle)
-                    if v["shape"] == "rod" else PlanarBody.block(
-                        mass=m, width=float(v["width"]), height=float(v["height"]), angle=angle))  # fmt: skip
-            res = solve_planar(body, inputs["vx"], inputs["vy"], inputs["omega"], mu=mu,
-                               kappa=kappa, law=v["law"])  # fmt: skip
+            body = (
+                PlanarBody.rod(mass=m, length=float(v["length"]), angle=angle)
+                if v["shape"] == "rod"
+                else PlanarBody.block(
+                    mass=m, width=float(v["width"]), height=float(v["height"]), angle=angle
+                )
+            )
+            res = solve_planar(
+                body, inputs["vx"], inputs["vy"], inputs["omega"], mu=mu, kappa=kappa, law=v["law"]
+            )
     del defaults
     return typed, res
 
@@ -261,18 +329,24 @@ def test_a_bad_input_shows_its_message_and_keeps_the_last_good_view(server, page
     good = wait_for(page, {"problem": "sphere"})
     page.wait_for_selector("#table-result")
     table = page.inner_text("#tables")
-    for name, text, words in (("mu", "-0.5", "mu must be >= 0"), ("speed", "fast", "speed must be a number"),
-                              ("spin_axis", "up", "--spin-axis must be")):  # fmt: skip
+    for name, text, words in (
+        ("mu", "-0.5", "mu must be >= 0"),
+        ("speed", "fast", "speed must be a number"),
+        ("spin_axis", "up", "--spin-axis must be"),
+    ):
         page.fill(f"#in-{name}", text)
         page.press(f"#in-{name}", "Enter")
-        page.wait_for_function("([n, w]) => document.querySelector('#err-' + n).textContent.includes(w)",
-                               arg=[name, words])  # fmt: skip
+        page.wait_for_function(
+            "([n, w]) => document.querySelector('#err-' + n).textContent.includes(w)",
+            arg=[name, words],
+        )
         assert page.inner_text("#command") == good.command
         assert page.inner_text("#tables") == table
         page.fill(f"#in-{name}", st.defaults("sphere")[name])
         page.press(f"#in-{name}", "Enter")
-        page.wait_for_function("n => document.querySelector('#err-' + n).textContent === ''",
-                               arg=name)  # fmt: skip
+        page.wait_for_function(
+            "n => document.querySelector('#err-' + n).textContent === ''", arg=name
+        )
     assert page.errors == []
 
 
@@ -298,8 +372,10 @@ def test_pinning_shows_the_differences(server, page):
     page.press("#in-mu", "Enter")
     wait_for(page, {"problem": "paper", "mu": "0.4"})
     page.wait_for_selector("#table-compare")
-    rows = {r.split("\t")[0]: r.split("\t") for r in
-            page.locator("#table-compare tbody tr").all_inner_texts()}  # fmt: skip
+    rows = {
+        r.split("\t")[0]: r.split("\t")
+        for r in page.locator("#table-compare tbody tr").all_inner_texts()
+    }
     assert rows["mu"][1:3] == ["0.1", "0.4"] if "mu" in rows else True
     data = download(page)
     assert data["pinned"]["inputs"]["mu"] == 0.1 and data["inputs"]["mu"] == 0.4

@@ -26,9 +26,20 @@ def test_every_problem_solves_with_its_defaults():
 
 
 def test_the_paper_body_is_the_solver_of_the_speed_angle_and_spin_typed():
-    found = st.evaluate({"problem": "paper", "speed": "18", "speed_unit": "km/h",
-                         "angle": "30", "spin": "-600", "mu": "0.3", "kappa": "0.6",
-                         "body": "solid-disk", "mass": "2", "radius": "0.05"})  # fmt: skip
+    found = st.evaluate(
+        {
+            "problem": "paper",
+            "speed": "18",
+            "speed_unit": "km/h",
+            "angle": "30",
+            "spin": "-600",
+            "mu": "0.3",
+            "kappa": "0.6",
+            "body": "solid-disk",
+            "mass": "2",
+            "radius": "0.05",
+        }
+    )
     speed = 18 / 3.6  # m/s
     vx, vy = speed * math.cos(math.radians(30)), -speed * math.sin(math.radians(30))
     omega = -600 * 2 * math.pi / 60
@@ -43,29 +54,49 @@ def test_the_paper_body_is_the_solver_of_the_speed_angle_and_spin_typed():
 
 
 def test_a_ball_takes_its_preset_and_the_surface_its_mu_and_kappa():
-    found = st.evaluate({"problem": "sphere", "ball": "golf", "surface": "green",
-                         "speed": "10", "angle": "20", "spin": "2000",
-                         "spin_axis": "backspin"})  # fmt: skip
+    found = st.evaluate(
+        {
+            "problem": "sphere",
+            "ball": "golf",
+            "surface": "green",
+            "speed": "10",
+            "angle": "20",
+            "spin": "2000",
+            "spin_axis": "backspin",
+        }
+    )
     s = found.setting
     assert s.inputs["mu"] == GROUNDS["green"].mu and s.inputs["kappa"] == GROUNDS["green"].kappa
     velocity = 10 * np.array([math.cos(math.radians(20)), -math.sin(math.radians(20)), 0.0])
     spin = np.array([0.0, 0.0, 2000 * 2 * math.pi / 60])  # backspin along +x is about +z
-    expected = solve_sphere(BALLS["golf"].body, velocity, spin, mu=GROUNDS["green"].mu,
-                            kappa=GROUNDS["green"].kappa)  # fmt: skip
+    expected = solve_sphere(
+        BALLS["golf"].body, velocity, spin, mu=GROUNDS["green"].mu, kappa=GROUNDS["green"].kappa
+    )
     np.testing.assert_allclose(float(s.result.after.wz), float(expected.after.wz), rtol=1e-13)
     typed_mu = st.evaluate({"problem": "sphere", "surface": "green", "mu": "0.05"})
     assert typed_mu.setting.inputs["mu"] == 0.05  # a typed value wins over the preset
 
 
 def test_a_rod_is_the_planar_solver_of_the_rod_preset():
-    found = st.evaluate({"problem": "planar", "shape": "rod", "length": "0.8",
-                         "orientation": "60", "speed": "3", "angle": "70", "spin": "0",
-                         "law": "newton", "mu": "0.4"})  # fmt: skip
+    found = st.evaluate(
+        {
+            "problem": "planar",
+            "shape": "rod",
+            "length": "0.8",
+            "orientation": "60",
+            "speed": "3",
+            "angle": "70",
+            "spin": "0",
+            "law": "newton",
+            "mu": "0.4",
+        }
+    )
     rod = PlanarBody.rod(mass=1.0, length=0.8, angle=math.radians(60))
     v = 3 * np.array([math.cos(math.radians(70)), -math.sin(math.radians(70))])
     expected = solve_planar(rod, v[0], v[1], 0.0, mu=0.4, kappa=0.8, law="newton")
-    np.testing.assert_allclose(float(found.setting.result.after.vx), float(expected.after.vx),
-                               rtol=1e-13)  # fmt: skip
+    np.testing.assert_allclose(
+        float(found.setting.result.after.vx), float(expected.after.vx), rtol=1e-13
+    )
 
 
 @pytest.mark.parametrize(
@@ -107,13 +138,21 @@ def test_the_address_round_trips():
     "given",
     [
         {"problem": "paper", "speed": "7", "angle": "35", "spin": "-250", "body": "ring"},
-        {"problem": "sphere", "ball": "tennis", "surface": "clay", "speed": "60",
-         "speed_unit": "km/h", "angle": "17", "heading": "30", "spin": "2500",
-         "spin_axis": "topspin+sidespin"},
+        {
+            "problem": "sphere",
+            "ball": "tennis",
+            "surface": "clay",
+            "speed": "60",
+            "speed_unit": "km/h",
+            "angle": "17",
+            "heading": "30",
+            "spin": "2500",
+            "spin_axis": "topspin+sidespin",
+        },
         {"problem": "planar", "shape": "block", "speed": "2", "angle": "80", "law": "energetic"},
         {"problem": "pendulum", "spin": "-40", "law": "newton", "mu": "0.5"},
     ],
-)  # fmt: skip
+)
 def test_the_command_line_shown_computes_the_same_impact(given):
     s = st.evaluate(given).setting
     args = [sys.executable, "-m", "spinimpact", *s.command.split()[1:]]
@@ -122,5 +161,4 @@ def test_the_command_line_shown_computes_the_same_impact(given):
     exact = s.result.after
     for key in ("vx", "vy", "omega") if "omega" in after else ("vx", "vy", "vz", "wx", "wz"):
         # the command converts the same text the same way: the same numbers to rounding
-        np.testing.assert_allclose(after[key], float(getattr(exact, key)), rtol=1e-12,
-                                   atol=1e-12)  # fmt: skip
+        np.testing.assert_allclose(after[key], float(getattr(exact, key)), rtol=1e-12, atol=1e-12)
