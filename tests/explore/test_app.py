@@ -65,3 +65,20 @@ def test_the_comparison_and_the_csv_hold_both_settings():
     read = list(csv.DictReader(io.StringIO(app.to_csv(two, one))))
     assert [r["setting"] for r in read] == ["pinned", "current"]
     assert float(read[1]["after_vx"]) == two["result"]["after_vx"]  # repr: full precision
+
+
+@pytest.mark.parametrize(
+    ("zeta", "mu", "kappa"), [(3.5, 0.2, 0.8), (2.0, 0.7, 0.3), (1.5, 0.05, 0)]
+)
+def test_the_map_is_the_librarys_map_on_its_half_plane(zeta, mu, kappa):
+    from spinimpact import Body
+    from spinimpact.viz.maps import map_fields
+
+    a, b, regime = views._regimes(zeta, mu, kappa)
+    # map_fields on 241 points a side: its a >= 0 half on the page's grid, every third row
+    whole_a, whole_b, fields = map_fields(
+        Body.from_zeta(mass=1.0, radius=1.0, zeta=zeta), mu=mu, kappa=kappa, extent=3.0, n=241
+    )
+    np.testing.assert_allclose(whole_a[120:], a, atol=1e-12)
+    np.testing.assert_allclose(whole_b[::3], b, atol=1e-12)
+    np.testing.assert_array_equal(fields["regime"][::3, 120:], regime)

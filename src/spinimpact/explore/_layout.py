@@ -88,7 +88,7 @@ def _raw_table(t: Any, changed: bool = False) -> str:
 def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: Any) -> Any:
     """The app: layout and callbacks around the functions of :mod:`.app`."""
     import dash
-    from dash import Input, Output, State, ctx, dcc, html, no_update
+    from dash import Input, Output, Patch, State, ctx, dcc, html, no_update
 
     app = dash.Dash(__name__, title="spinimpact explorer", serve_locally=True, update_title=None)
     app.index_string = app.index_string.replace("{%css%}", "{%css%}<style>" + _CSS + "</style>")
@@ -97,6 +97,7 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
         [
             dcc.Location(id="url", refresh=False),
             dcc.Store(id="current"),
+            dcc.Store(id="map-key"),
             dcc.Store(id="pinned"),
             dcc.Download(id="download"),
             html.Header(
@@ -172,13 +173,16 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
         *errors_out,
         *views_out,
         Output("current", "data"),
+        Output("map-key", "data"),
         Input("url", "search"),
         Input("map", "clickData"),
         *values_in,
+        State("map-key", "data"),
         running=[(Output("status", "children"), "computing…", "")],
     )
     def step(search: str | None, click: Any, *given: str) -> Any:
         """One round trip a change: the address and the inputs agree, then every view."""
+        *given, drawn = given
         values = dict(zip(_NAMES, given, strict=True))
         address: Any = None
         shown: Any = [no_update] * len(_NAMES)
@@ -189,7 +193,7 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
             point = (click or {}).get("points", [{}])[0]
             moved = clicked(values, float(point.get("x", "nan")), float(point.get("y", "nan")))
             if moved is None:
-                return [no_update] * (3 * len(_NAMES) + 7)
+                return [no_update] * (3 * len(_NAMES) + 8)
             values, shown = moved, [moved[n] for n in _NAMES]
         elif ctx.triggered_id == "in-problem":
             old = st.from_query(search or "").get("problem", "paper")
@@ -203,13 +207,18 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
         errors = [out["errors"].get(n, "") for n in _NAMES]
         head = [address, *shown, *_styles(values), *errors]
         if out["errors"]:  # the last good views stay
-            return [*head, *[no_update] * 6]
+            return [*head, *[no_update] * 7]
         f = out["figures"]
+        key = views.map_key(out["setting"])
+        if key is not None and key == drawn:  # the same colours: move the marker alone
+            point = views.map_point(out["setting"])
+            f["map"] = Patch()
+            f["map"]["data"][1]["x"], f["map"]["data"][1]["y"] = [point[0]], [point[1]]
         body = dcc.Markdown(
             "\n".join(_raw_table(t) for t in out["tables"]), dangerously_allow_html=True
         )
         data = out["data"]
-        return [*head, f["bounce"], f["process"], f["map"], body, data["command"], data]
+        return [*head, f["bounce"], f["process"], f["map"], body, data["command"], data, key]
 
     def _styles(values: dict[str, str]) -> list[dict[str, str]]:
         shown = set(st.relevant(values))

@@ -4,7 +4,8 @@ Each function takes a checked :class:`~spinimpact.explore.settings.Setting` and 
 the library computed: the bounce (:func:`bounce`), the impact process over the normal
 impulse from the result's own ``history()`` (:func:`process`, with Routh's diagram of the
 friction impulse for a planar body), the map of regimes from
-:func:`spinimpact.viz.maps.map_fields` (:func:`regime_map`, cached by body and surface)
+the library's solver over the incidence plane (:func:`regime_map`, cached by body and
+surface)
 and the ball's flight from :func:`spinimpact.flight` (:func:`flight_view`). No formula of
 the theory is evaluated here. The dicts are what ``dcc.Graph`` takes, so drawing costs no
 Plotly import.
@@ -18,10 +19,21 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["bounce", "process", "regime_map", "map_point", "flight_view", "MAP_POINTS"]
+__all__ = [
+    "bounce",
+    "process",
+    "regime_map",
+    "map_key",
+    "map_point",
+    "flight_view",
+    "MAP_POINTS",
+    "MAP_ROWS",
+]
 
 #: Grid points per axis of the regime map (about the width of its panel in pixels / 3).
 MAP_POINTS = 121
+#: Rows of the regime map (its panel is about half as tall as wide).
+MAP_ROWS = 81
 _EXTENT = 3.0
 _BEFORE, _AFTER, _SPIN = "#1f77b4", "#d62728", "#2ca02c"
 _FONT = {"family": "DejaVu Sans, sans-serif", "size": 12}
@@ -229,12 +241,26 @@ def process(s: Any) -> dict[str, Any]:
 
 
 @functools.lru_cache(maxsize=32)
-def _fields(zeta: float, mu: float, kappa: float) -> tuple[np.ndarray, np.ndarray, dict]:
+def _regimes(zeta: float, mu: float, kappa: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The regime (an index into :func:`~spinimpact.viz.maps.map_regimes`) on the half-plane
+    ``a = vx/|vy|`` in ``[0, 3]`` (:data:`MAP_POINTS` columns, the page's own incidences)
+    by ``b = R omega/|vy|`` in ``[-3, 3]`` (:data:`MAP_ROWS` rows), solved by
+    :func:`spinimpact.solve` at ``vy = -1`` m/s for a body of this ``zeta`` with unit mass
+    and radius (nothing else of a body changes a map, as
+    :func:`~spinimpact.viz.maps.map_fields` explains; that function solves the whole plane,
+    and ``a < 0`` mirrors ``a > 0``)."""
     from ..model.body import Body
-    from ..viz.maps import map_fields
+    from ..model.impact import solve
+    from ..viz.maps import map_regimes
 
     unit = Body.from_zeta(mass=1.0, radius=1.0, zeta=zeta)
-    return map_fields(unit, mu=mu, kappa=kappa, extent=_EXTENT, n=MAP_POINTS)
+    # the points of map_fields(n=241): its a >= 0 half, every third row
+    a = np.linspace(-_EXTENT, _EXTENT, 2 * MAP_POINTS - 1)[MAP_POINTS - 1 :]
+    b = np.linspace(-_EXTENT, _EXTENT, 3 * MAP_ROWS - 2)[::3]
+    imp = solve(unit, a[None, :], -1.0, b[:, None], mu=mu, kappa=kappa)
+    code = {name: i for i, name in enumerate(map_regimes(mu, kappa))} | {"no-slip": 0}
+    names, inverse = np.unique(imp.regime, return_inverse=True)
+    return a, b, np.array([code[str(x)] for x in names], np.int8)[inverse].reshape(imp.shape)
 
 
 def map_point(s: Any) -> tuple[float, float] | None:
@@ -255,9 +281,17 @@ def map_point(s: Any) -> tuple[float, float] | None:
     return along / vn, float(np.dot(slip, e) - along) / vn
 
 
+def map_key(s: Any) -> str | None:
+    """What the map's colours depend on (``zeta``, ``mu``, ``kappa``; ``None``: no map): two
+    settings with the same key differ on the map by their marker alone."""
+    if map_point(s) is None:
+        return None
+    return repr((float(s.body.zeta), float(s.result.mu), float(s.result.kappa)))
+
+
 def regime_map(s: Any) -> dict[str, Any]:
     """The regimes over the incidence plane at this body's ``zeta``, ``mu`` and ``kappa``
-    (:func:`spinimpact.viz.maps.map_fields`), with this setting's incidence marked."""
+    (:func:`_regimes`), with this setting's incidence marked."""
     from ..viz.maps import map_regimes
 
     point = map_point(s)
@@ -265,17 +299,16 @@ def regime_map(s: Any) -> dict[str, Any]:
         why = "the rigid law" if s.law is not None else "the paper's bodies and a ball"
         return {"data": [], "layout": _layout(f"Regime map: drawn for {why} only")}
     mu, kappa = float(s.result.mu), float(s.result.kappa)
-    a, b, f = _fields(float(s.body.zeta), mu, kappa)
+    a, b, regime = _regimes(float(s.body.zeta), mu, kappa)
     names = map_regimes(mu, kappa)
     colours = ["#9ecae1", "#fdae6b", "#c7e9c0", "#dadaeb"]
     k = len(names)
     scale = [[(i + (j % 2)) / k, colours[i]] for i in range(k) for j in (0, 1)]
-    ahead = a >= 0  # the page's incidences travel along +x (a ball: along its heading)
     heat = {
         "type": "heatmap",
-        "x": a[ahead].tolist(),
+        "x": a.tolist(),
         "y": b.tolist(),
-        "z": f["regime"][:, ahead].tolist(),
+        "z": regime.tolist(),
         "zmin": -0.5,
         "zmax": k - 0.5,
         "colorscale": scale,
