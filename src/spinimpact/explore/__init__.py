@@ -41,9 +41,12 @@ def serve(host: str = "127.0.0.1", port: int = 8050, *, ready: object = None) ->
         ) from None
     from werkzeug.serving import make_server
 
-    from .app import create_app
+    from . import settings
+    from .app import create_app, update
 
     app = create_app()
+    for kind in ("paper", "sphere"):  # the first page opens without the imports' wait
+        update(settings.defaults(kind))
     server = make_server(host, port, app.server, threaded=True)
     address = f"http://{host}:{server.server_port}/"
     if callable(ready):

@@ -64,9 +64,18 @@ def _vectors(s: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _arrow(
-    start: tuple, end: tuple, colour: str, text: str, xref: str, yref: str, dash: bool = False
-) -> dict[str, Any]:
-    return {
+    start: tuple,
+    end: tuple,
+    colour: str,
+    text: str,
+    xref: str,
+    yref: str,
+    dash: bool = False,
+    label_at_start: bool = False,
+    shift: int = 0,
+) -> list[dict]:
+    """An arrow from ``start`` to ``end`` and its label beyond its free end, away from it."""
+    arrow = {
         "x": end[0],
         "y": end[1],
         "ax": start[0],
@@ -79,10 +88,26 @@ def _arrow(
         "arrowhead": 3,
         "arrowwidth": 1.5 if dash else 2.5,
         "arrowcolor": colour,
-        "text": text,
-        "font": {"color": colour, "size": 11},
+        "text": "",
         "standoff": 0,
     }
+    at, other = (start, end) if label_at_start else (end, start)
+    dx, dy = at[0] - other[0], at[1] - other[1]
+    size = math.hypot(dx, dy) or 1.0
+    ux, uy = dx / size, dy / size
+    label = {
+        "x": at[0],
+        "y": at[1],
+        "xref": xref,
+        "yref": yref,
+        "showarrow": False,
+        "text": text,
+        "font": {"color": colour, "size": 11},
+        "yshift": shift,
+        "xanchor": "left" if ux > 0.3 else "right" if ux < -0.3 else "center",
+        "yanchor": "bottom" if uy > 0.3 else "top" if uy < -0.3 else "middle",
+    }
+    return [arrow, label]
 
 
 def bounce(s: Any) -> dict[str, Any]:
@@ -141,22 +166,30 @@ def bounce(s: Any) -> dict[str, Any]:
             d = (vec[i] * scale, vec[j] * scale)
             start = (c[0] - d[0], c[1] - d[1]) if arriving else c
             end = c if arriving else (c[0] + d[0], c[1] + d[1])
-            notes.append(_arrow(start, end, colour, label, xa, ya))
-        for vec, label in ((w0, "ω before"), (w1, "ω after")):
+            notes += _arrow(start, end, colour, label, xa, ya, label_at_start=arriving)
+        for vec, label, shift in ((w0, "ω before", 0), (w1, "ω after", -14)):
             d = (vec[i] * wscale, vec[j] * wscale)
             if math.hypot(*d) > 1e-9 * size:
-                notes.append(_arrow(c, (c[0] + d[0], c[1] + d[1]), _SPIN, label, xa, ya, True))
+                end = (c[0] + d[0], c[1] + d[1])
+                notes += _arrow(c, end, _SPIN, label, xa, ya, dash=True, shift=shift)
         del name
     lim = 4.5 * size
     axis = {"range": [-lim, lim], "zeroline": False}
     layout = _layout(
-        "Bounce: side view (x, y) and top view (x, z); spin ω in green",
+        "Bounce: side view and top view; velocity before (blue), after (red), spin ω (green)",
         annotations=notes,
         showlegend=False,
         xaxis={**axis, "domain": [0, 0.47], "title": {"text": "x (m)"}},
         yaxis={**axis, "scaleanchor": "x", "title": {"text": "y (m)"}},
         xaxis2={**axis, "domain": [0.53, 1], "title": {"text": "x (m)"}},
-        yaxis2={**axis, "scaleanchor": "x2", "anchor": "x2", "title": {"text": "z (m)"}},
+        # seen from above (+y): z points down the screen, headings turn counter-clockwise
+        yaxis2={
+            **axis,
+            "range": [lim, -lim],
+            "scaleanchor": "x2",
+            "anchor": "x2",
+            "title": {"text": "z (m), seen from above"},
+        },
     )
     return {"data": traces, "layout": layout}
 
@@ -380,6 +413,10 @@ def flight_view(s: Any) -> dict[str, Any]:
         xaxis={"domain": [0, 0.47], "title": {"text": "x (m)"}},
         yaxis={"title": {"text": "y (m)"}},
         xaxis2={"domain": [0.53, 1], "title": {"text": "x (m)"}},
-        yaxis2={"anchor": "x2", "title": {"text": "z (m)"}},
+        yaxis2={
+            "anchor": "x2",
+            "autorange": "reversed",
+            "title": {"text": "z (m), seen from above"},
+        },
     )
     return {"data": data, "layout": layout}
