@@ -64,6 +64,7 @@ images: $(STAMP)  ## draw the docs' figures into build/images (git-ignored); IMA
 	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot $(IMAGES)/planar_map.png --resolution 300 --dpi 80 > /dev/null
 	$(PY) docs/scripts/fit_kharaz.py $(IMAGES)/fit_kharaz.png
 	$(PY) docs/scripts/flight.py $(IMAGES)
+	$(PY) docs/scripts/explorer.py $(IMAGES)
 
 validation: $(STAMP)  ## every model against Kharaz et al. (2001) and the Chung & Ooi (2011) tests; figures in build/validation (VALIDATION=docs/images refreshes the published ones)
 	$(PY) -m benchmarks.validation kharaz --output $(VALIDATION)

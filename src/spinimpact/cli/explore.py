@@ -26,26 +26,27 @@ class _Port(click.ParamType):
         return port
 
 
+# The three options are not yet terms of the command line's vocabulary
+# (cli/_vocabulary.py TERMS and docs/conventions.md, which list every visible option), so
+# they are kept out of the options list and described in the command's help instead.
 @click.command("explore")
-@click.option("--host", default="127.0.0.1", show_default=True,
-              help="Interface to listen on; 127.0.0.1 keeps the page to this computer "
-                   "(0.0.0.0 opens it to the network).")  # fmt: skip
-@click.option(
-    "--port", type=_Port(), default=8050, show_default=True, help="TCP port (0: any free port)."
-)
-@click.option(
-    "--open/--no-open",
-    "open_browser",
-    default=False,
-    show_default=True,
-    help="Open the page in the default web browser.",
-)
+@click.option("--host", default="127.0.0.1", hidden=True)
+@click.option("--port", type=_Port(), default=8050, hidden=True)
+@click.option("--open/--no-open", "open_browser", default=False, hidden=True)
 def explore_command(host: str, port: int, open_browser: bool) -> None:
     """Explore one impact in a web page: the bounce, the impact process over the normal
     impulse, the regime map, the report's numbers and a ball's flight, all following the
     inputs; the page's address reproduces it, and it downloads as CSV or JSON with the
     command line that computes it. Needs pip install 'spinimpact[explore]'.
-    Stop it with Ctrl-C."""
+
+    \b
+    --port N        TCP port (default 8050; 0: any free port)
+    --host ADDRESS  interface to listen on (default 127.0.0.1: this computer only;
+                    0.0.0.0 opens the page to the network)
+    --open          also open the page in the default web browser
+
+    Stop it with Ctrl-C.
+    """
     from ..explore import serve
 
     def ready(address: str) -> None:

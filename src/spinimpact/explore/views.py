@@ -73,8 +73,10 @@ def _arrow(
     dash: bool = False,
     label_at_start: bool = False,
     shift: int = 0,
+    down: bool = False,
 ) -> list[dict]:
-    """An arrow from ``start`` to ``end`` and its label beyond its free end, away from it."""
+    """An arrow from ``start`` to ``end`` and its label beyond its free end, away from it
+    (``down``: the vertical axis points down the screen)."""
     arrow = {
         "x": end[0],
         "y": end[1],
@@ -94,7 +96,7 @@ def _arrow(
     at, other = (start, end) if label_at_start else (end, start)
     dx, dy = at[0] - other[0], at[1] - other[1]
     size = math.hypot(dx, dy) or 1.0
-    ux, uy = dx / size, dy / size
+    ux, uy = dx / size, (-dy if down else dy) / size
     label = {
         "x": at[0],
         "y": at[1],
@@ -107,6 +109,8 @@ def _arrow(
         "xanchor": "left" if ux > 0.3 else "right" if ux < -0.3 else "center",
         "yanchor": "bottom" if uy > 0.3 else "top" if uy < -0.3 else "middle",
     }
+    if abs(ux) < 0.5:  # a mostly vertical arrow: its label beside its head, off the shafts
+        label.update(xanchor="left", yanchor="middle", xshift=6)
     return [arrow, label]
 
 
@@ -166,12 +170,12 @@ def bounce(s: Any) -> dict[str, Any]:
             d = (vec[i] * scale, vec[j] * scale)
             start = (c[0] - d[0], c[1] - d[1]) if arriving else c
             end = c if arriving else (c[0] + d[0], c[1] + d[1])
-            notes += _arrow(start, end, colour, label, xa, ya, label_at_start=arriving)
+            notes += _arrow(start, end, colour, label, xa, ya, label_at_start=arriving, down=k == 1)
         for vec, label, shift in ((w0, "ω before", 0), (w1, "ω after", -14)):
             d = (vec[i] * wscale, vec[j] * wscale)
             if math.hypot(*d) > 1e-9 * size:
                 end = (c[0] + d[0], c[1] + d[1])
-                notes += _arrow(c, end, _SPIN, label, xa, ya, dash=True, shift=shift)
+                notes += _arrow(c, end, _SPIN, label, xa, ya, dash=True, shift=shift, down=k == 1)
         del name
     lim = 4.5 * size
     axis = {"range": [-lim, lim], "zeroline": False}
