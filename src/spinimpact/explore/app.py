@@ -38,7 +38,7 @@ def tables(s: st.Setting) -> tuple[Table, ...]:
             from ..viz.tables import impact_tables
 
             out = impact_tables(s.result, typeset=True)
-        elif s.problem == "sphere":
+        elif s.problem in ("sphere", "pair"):
             from ..viz.sphere import sphere_tables
 
             out = sphere_tables(s.result, typeset=True)

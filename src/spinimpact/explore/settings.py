@@ -52,6 +52,7 @@ __all__ = [
 PROBLEMS: dict[str, str] = {
     "paper": "the paper's bodies: a disk, ring, sphere or shell in plane motion",
     "sphere": "a ball in 3D on a surface",
+    "pair": "two balls colliding on a table (ball 2 at rest)",
     "planar": "a rod or a block in plane motion",
     "pendulum": "a rod pendulum on a fixed pivot",
 }
@@ -90,33 +91,35 @@ class Field:
 
 _ALL = tuple(PROBLEMS)
 _MOVING = ("paper", "sphere", "planar")
+_BALL = ("sphere", "pair")
 FIELDS: dict[str, Field] = {
     f.name: f
     for f in (
         Field("problem", "problem", "", "paper", _ALL, tuple(PROBLEMS)),
-        Field("ball", "ball", "", "tennis", ("sphere",), ("custom", *_BALLS)),
+        Field("ball", "ball", "", "tennis", _BALL, ("custom", *_BALLS)),
         Field("surface", "surface", "", "hard", ("sphere",), ("custom", *_SURFACES)),
         Field(
             "body",
             "body",
             "",
             "solid-sphere",
-            ("paper", "sphere"),
+            ("paper", *_BALL),
             ("solid-sphere", "solid-disk", "ring", "spherical-shell"),
         ),
         Field("shape", "body", "", "rod", ("planar",), ("rod", "block")),
         Field("mass", "mass m", "kg", "1", _ALL),
-        Field("radius", "radius R", "m", "0.1", ("paper", "sphere")),
+        Field("radius", "radius R", "m", "0.1", ("paper", *_BALL)),
         Field("length", "length L", "m", "1", ("planar", "pendulum")),
         Field("width", "width", "m", "0.2", ("planar",)),
         Field("height", "height", "m", "0.1", ("planar",)),
         Field("orientation", "orientation from the surface", "deg", "45", ("planar", "pendulum")),
-        Field("speed", "speed", "", "5", _MOVING),
-        Field("speed_unit", "speed unit", "", "m/s", _MOVING, ("m/s", "km/h", "mph")),
+        Field("speed", "speed", "", "5", (*_MOVING, "pair")),
+        Field("speed_unit", "speed unit", "", "m/s", (*_MOVING, "pair"), ("m/s", "km/h", "mph")),
         Field("angle", "incidence from the surface", "deg", "45", _MOVING),
-        Field("heading", "heading from +x", "deg", "0", ("sphere",)),
+        Field("heading", "heading from +x", "deg", "0", _BALL),
         Field("spin", "spin", "rpm", "300", _ALL),
-        Field("spin_axis", "spin axis (or x,y,z)", "", "backspin", ("sphere",)),
+        Field("spin_axis", "spin axis (or x,y,z)", "", "backspin", _BALL),
+        Field("normal", "normal from ball 2 to ball 1 (x,y,z)", "", "-1,0,0.5", ("pair",)),
         Field("mu", "friction mu", "", "", _ALL),
         Field("kappa", "restitution kappa", "", "", _ALL),
         Field(
@@ -155,7 +158,7 @@ def relevant(values: dict[str, str]) -> tuple[str, ...]:
     kind = values.get("problem", "paper")
     out = [n for n, f in FIELDS.items() if kind in f.problems]
     drop = set()
-    if kind == "sphere" and values.get("ball", "tennis") != "custom":
+    if kind in _BALL and values.get("ball", "tennis") != "custom":
         drop |= {"body", "mass", "radius"}
     if kind == "planar":
         drop |= {"length"} if values.get("shape") == "block" else {"width", "height"}
@@ -244,6 +247,8 @@ _OPTIONS = {
     "--beta0": "beta0",
     "beta0": "beta0",
     "poisson_ratio": "poisson_ratio",
+    "--normal": "normal",
+    "normal": "normal",
     "length": "length",
     "width": "width",
     "height": "height",
@@ -268,7 +273,7 @@ def _numbers(values: dict[str, str], names: tuple[str, ...], errors: dict[str, s
             if values[name] not in f.choices:
                 errors[name] = f"{name} must be one of {', '.join(f.choices)}, got {values[name]!r}"
             continue
-        if name == "spin_axis":
+        if name in ("spin_axis", "normal"):
             continue
         text = values[name].strip()
         if text == "" and name in ("mu", "kappa"):
@@ -332,7 +337,7 @@ def _blame(kind: str, message: str) -> str:
     head = words[0] if words else ""
     if head in FIELDS:
         return head
-    return "spin" if kind == "pendulum" else "angle"
+    return {"pendulum": "spin", "pair": "normal"}.get(kind, "angle")
 
 
 def _law(values: dict[str, str], numbers: dict) -> Any:
@@ -376,11 +381,23 @@ def _surface(values: dict[str, str], numbers: dict, ground: str | None) -> tuple
     return (0.2 if mu is None else mu), (0.8 if kappa is None else kappa)
 
 
+def _normal(text: str) -> np.ndarray:
+    """A direction typed as ``x,y,z`` (the command line's reading of ``--normal``)."""
+    import click
+
+    from ..cli.sphere import VECTOR
+
+    try:
+        return np.asarray(VECTOR.convert(text, None, None), dtype=float)
+    except click.BadParameter as exc:
+        raise click.UsageError(f"--normal: {exc.message}") from None
+
+
 def _solve(kind: str, values: dict[str, str], n: dict) -> Setting:
-    from .. import solve, solve_pendulum, solve_planar, solve_sphere
-    from ..cli._common import make_body
+    from .. import solve, solve_pair, solve_pendulum, solve_planar, solve_sphere
+    from ..cli._common import SPEED_UNITS, make_body
     from ..cli.planar import make_planar_body
-    from ..cli.sphere import spin_vector
+    from ..cli.sphere import incidence, spin_vector
     from ..model.presets import BALLS
 
     rad_s = n["spin"] * 2.0 * math.pi / 60.0
@@ -464,6 +481,38 @@ def _solve(kind: str, values: dict[str, str], n: dict) -> Setting:
         if ground is None or values["kappa"].strip():
             cmd += ["--kappa", _fmt(kappa)]
         cmd += _tangential_options(values)
+    elif kind == "pair":
+        law, ground = None, None
+        ball = values["ball"] if values["ball"] != "custom" else None
+        body = BALLS[ball].body if ball else make_body(values["body"], n["mass"], n["radius"], None)
+        mu, kappa = _surface(values, n, None)
+        normal = _normal(values["normal"])
+        up = (0.0, 1.0, 0.0)
+        speed = n["speed"] * SPEED_UNITS[values["speed_unit"]]
+        velocity = incidence(speed, 0.0, n["heading"], up)  # along the table
+        spin = np.asarray(spin_vector(n["spin"], values["spin_axis"], up, velocity))
+        rest = np.zeros(3)
+        result = solve_pair(body, body, velocity1=velocity, spin1=spin, velocity2=rest,
+                            spin2=rest, mu=mu, kappa=kappa, normal=normal)  # fmt: skip
+        inputs = dict(zip(("vx", "vy", "vz"), map(float, velocity), strict=True))
+        inputs |= dict(zip(("wx", "wy", "wz"), map(float, spin), strict=True))
+        inputs |= {f"{k}2": 0.0 for k in ("vx", "vy", "vz", "wx", "wy", "wz")}
+        inputs |= dict(zip(("normal_x", "normal_y", "normal_z"), map(float, normal), strict=True))
+        inputs |= {"mu": mu, "kappa": kappa}
+        for k in ("", "2"):
+            inputs |= {f"mass{k}": float(body.mass), f"radius{k}": float(body.radius),
+                       f"gyration{k}": float(body.gyration)}  # fmt: skip
+        sizes = ("body", "mass", "radius")
+        pick = (
+            ["--ball1", ball, "--ball2", ball]
+            if ball
+            else [x for k in "12" for o in sizes for x in (f"--{o}{k}", values[o])]
+        )
+        cmd += ["pair", *pick, "--speed1", values["speed"], "--speed-unit",
+                values["speed_unit"], "--heading1-deg", values["heading"], "--spin1-rpm",
+                values["spin"], "--spin1-axis", values["spin_axis"], "--velocity2", "0,0,0",
+                "--spin2", "0,0,0", "--normal", ",".join(_fmt(x) for x in normal),
+                "--mu", _fmt(mu), "--kappa", _fmt(kappa)]  # fmt: skip
     else:
         law = None
         ball = ground = None

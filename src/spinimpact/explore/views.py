@@ -53,8 +53,8 @@ def _layout(title: str, **extra: Any) -> dict[str, Any]:
 def _vectors(s: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Centre velocity and spin vector before and after (m/s, rad/s), in 3D."""
     r = s.result
-    b, a = r.before, r.after
-    if s.problem == "sphere":
+    b, a = (r.before1, r.after1) if s.problem == "pair" else (r.before, r.after)
+    if s.problem in ("sphere", "pair"):
         return tuple(np.array([float(x.vx), float(x.vy), float(x.vz)]) for x in (b, a)) + tuple(
             np.array([float(x.wx), float(x.wy), float(x.wz)]) for x in (b, a)
         )  # type: ignore[return-value]
@@ -163,6 +163,21 @@ def bounce(s: Any) -> dict[str, Any]:
             }
         )
         c = (centre[i], centre[j])
+        if s.problem == "pair":  # ball 2, at rest before, touching ball 1 along the normal
+            n = np.array([s.inputs[f"normal_{x}"] for x in "xyz"])
+            other = centre - 2 * size * n / np.linalg.norm(n)
+            traces.append(
+                dict(
+                    traces[-1],
+                    x=list(other[i] + size * np.cos(t)),
+                    y=list(other[j] + size * np.sin(t)),
+                )
+            )
+            a2 = s.result.after2
+            d2 = np.array([float(a2.vx), float(a2.vy), float(a2.vz)]) * scale
+            start2 = (other[i], other[j])
+            end2 = (other[i] + d2[i], other[j] + d2[j])
+            notes += _arrow(start2, end2, _AFTER, "ball 2 after", xa, ya, down=k == 1)
         for vec, colour, label, arriving in (
             (v0, _BEFORE, "v before", True),
             (v1, _AFTER, "v after", False),
@@ -215,6 +230,13 @@ def process(s: Any) -> dict[str, Any]:
     and normal velocity (m/s) from the result's ``history()``; for a planar body or a
     pendulum, Routh's diagram of the friction impulse beside it."""
     r = s.result
+    if s.problem == "pair":
+        return {
+            "data": [],
+            "layout": _layout(
+                "Impact process: not drawn for two balls (spinimpact pair reports its impulses)"
+            ),
+        }
     if not hasattr(r, "history"):  # a tangential law: its own process is not sampled here
         return {
             "data": [],
