@@ -43,7 +43,7 @@ def _layout(title: str, **extra: Any) -> dict[str, Any]:
     return {
         "title": {"text": title, "x": 0.02, "font": {"size": 14}},
         "font": _FONT,
-        "margin": {"l": 55, "r": 15, "t": 40, "b": 45},
+        "margin": {"l": 55, "r": 15, "t": 55, "b": 45},
         "autosize": True,
         "legend": {"orientation": "h", "y": -0.25},
         **extra,
@@ -195,7 +195,8 @@ def bounce(s: Any) -> dict[str, Any]:
     lim = 4.5 * size
     axis = {"range": [-lim, lim], "zeroline": False}
     layout = _layout(
-        "Bounce: side view and top view; velocity before (blue), after (red), spin ω (green)",
+        "Bounce, seen from the side and from above:<br>velocity before (blue), after (red), "
+        "spin ω (green)",
         annotations=notes,
         showlegend=False,
         xaxis={**axis, "domain": [0, 0.47], "title": {"text": "x (m)"}},
@@ -207,7 +208,7 @@ def bounce(s: Any) -> dict[str, Any]:
             "range": [lim, -lim],
             "scaleanchor": "x2",
             "anchor": "x2",
-            "title": {"text": "z (m), seen from above"},
+            "title": {"text": "z (m)"},
         },
     )
     return {"data": traces, "layout": layout}
@@ -295,7 +296,7 @@ def process(s: Any) -> dict[str, Any]:
         layout["xaxis"]["domain"] = [0, 0.55]
         layout["xaxis2"] = {"domain": [0.67, 1], "title": {"text": "normal impulse τ (N s)"}}
         layout["yaxis2"] = {"anchor": "x2", "title": {"text": "friction impulse f (N s)"}}
-        layout["title"]["text"] = "Impact process over τ, and Routh's diagram (right)"
+        layout["title"]["text"] = "Impact process over τ,<br>and Routh's diagram (right)"
     return {"data": data, "layout": layout}
 
 
@@ -385,7 +386,7 @@ def regime_map(s: Any) -> dict[str, Any]:
         "marker": {"symbol": "x", "size": 12, "color": "black"},
         "cliponaxis": True,
     }
-    title = f"Regimes at μ = {mu:.6g}, κ = {kappa:.6g} (click to move there)"
+    title = f"Regimes at μ = {mu:.6g}, κ = {kappa:.6g}<br>(click to move there)"
     layout = _layout(
         title,
         showlegend=False,
@@ -434,7 +435,7 @@ def flight_view(s: Any) -> dict[str, Any]:
     ]
     n = int(np.asarray(fl.bounce_count).reshape(-1)[0])
     layout = _layout(
-        f"Flight after the bounce: {n} more bounces on {ground}",
+        f"Flight after the bounce:<br>{n} more bounces on {ground}",
         showlegend=False,
         xaxis={"domain": [0, 0.47], "title": {"text": "x (m)"}},
         yaxis={"title": {"text": "y (m)"}},
@@ -442,7 +443,7 @@ def flight_view(s: Any) -> dict[str, Any]:
         yaxis2={
             "anchor": "x2",
             "autorange": "reversed",
-            "title": {"text": "z (m), seen from above"},
+            "title": {"text": "z (m)"},
         },
     )
     return {"data": data, "layout": layout}
