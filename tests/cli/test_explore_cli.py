@@ -20,6 +20,7 @@ def test_a_bad_port_is_one_line_naming_the_option_and_value(cli, port):
     assert len(lines) == 1 and "--port" in lines[0] and repr(port) in lines[0], err
 
 
+@pytest.mark.slow  # a fresh interpreter: about a second
 def test_without_dash_the_command_names_the_extra():
     code = (
         "import sys; sys.modules['dash'] = None\n"  # an import of dash now fails
