@@ -26,24 +26,32 @@ class _Port(click.ParamType):
         return port
 
 
-# The three options are not yet terms of the command line's vocabulary
-# (cli/_vocabulary.py TERMS and docs/conventions.md, which list every visible option), so
-# they are kept out of the options list and described in the command's help instead.
 @click.command("explore")
-@click.option("--host", default="127.0.0.1", hidden=True)
-@click.option("--port", type=_Port(), default=8050, hidden=True)
-@click.option("--open/--no-open", "open_browser", default=False, hidden=True)
+@click.option(
+    "--host",
+    default="127.0.0.1",
+    show_default=True,
+    help="Network interface the explorer listens on (127.0.0.1: this computer only); "
+    "0.0.0.0 opens the page to the network.",
+)
+@click.option(
+    "--port",
+    type=_Port(),
+    default=8050,
+    show_default=True,
+    help="TCP port of the explorer (0: any free port).",
+)
+@click.option(
+    "--open/--no-open",
+    "open_browser",
+    default=False,
+    help="Open the explorer's page in the default web browser.",
+)
 def explore_command(host: str, port: int, open_browser: bool) -> None:
     """Explore one impact in a web page: the bounce, the impact process over the normal
     impulse, the regime map, the report's numbers and a ball's flight, all following the
     inputs; the page's address reproduces it, and it downloads as CSV or JSON with the
     command line that computes it. Needs pip install 'spinimpact[explore]'.
-
-    \b
-    --port N        TCP port (default 8050; 0: any free port)
-    --host ADDRESS  interface to listen on (default 127.0.0.1: this computer only;
-                    0.0.0.0 opens the page to the network)
-    --open          also open the page in the default web browser
 
     Stop it with Ctrl-C.
     """
