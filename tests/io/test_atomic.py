@@ -12,6 +12,7 @@ import sys
 import tempfile
 import textwrap
 import time
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -210,6 +211,45 @@ def test_a_signal_inside_a_callback_from_compiled_code_stops_once_back(capfd):
     assert stopped.value.signum == signal.SIGINT
     assert capfd.readouterr().err == ""  # nothing swallowed and printed
     assert signal.getsignal(signal.SIGALRM) is signal.SIG_DFL  # restored
+
+
+@pytest.mark.parametrize("where", ["importlib._bootstrap", "__del__"])
+def test_a_signal_where_exceptions_are_swallowed_stops_once_back(where, capfd):
+    # A weak-reference callback of the import system's module locks, or a __del__, prints
+    # and swallows an exception raised in it (seen in the signal stress test: "Exception
+    # ignored in: <function _get_module_lock.<locals>.cb>"). The stop must wait.
+    if where == "__del__":
+
+        class Doomed:
+            def __del__(self):
+                signal.raise_signal(signal.SIGINT)
+
+        def trigger():
+            Doomed()  # dropped at once: __del__ runs here
+    else:
+        module = {"__name__": where, "signal": signal}
+        exec("def cb(_ref):\n    signal.raise_signal(signal.SIGINT)\n", module)
+
+        class Target:
+            pass
+
+        def trigger():
+            target = Target()
+            ref = weakref.ref(target, module["cb"])
+            del target  # the callback runs here, as at the end of an import
+            return ref
+
+    returned = False
+    with _stop.stop_on_signals(), pytest.raises(_stop.Stopped) as stopped:
+        trigger()
+        returned = True
+        deadline = time.monotonic() + 10
+        while time.monotonic() < deadline:  # the retry comes 20 ms later
+            time.sleep(0.001)
+        pytest.fail("not stopped after the callback returned")  # pragma: no cover
+    assert returned
+    assert stopped.value.signum == signal.SIGINT
+    assert capfd.readouterr().err == ""  # nothing swallowed and printed
 
 
 def test_writes_through_a_link_onto_its_target(tmp_path):

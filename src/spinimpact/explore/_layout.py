@@ -9,10 +9,16 @@ and download what is shown.
 from __future__ import annotations
 
 import json
+import threading
 from typing import Any
 
 from . import settings as st
 from . import views
+
+# The server answers requests on several threads, and the solvers' compiled kernels run on
+# Numba's thread pool, whose default layer must not be entered from two threads at once:
+# one solve at a time.
+_SOLVING = threading.Lock()
 
 _NAMES = tuple(st.FIELDS)
 _CSS = """
@@ -191,7 +197,8 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
             address, shown = no_update, [values[n] for n in _NAMES]
         elif ctx.triggered_id == "map":
             point = (click or {}).get("points", [{}])[0]
-            moved = clicked(values, float(point.get("x", "nan")), float(point.get("y", "nan")))
+            with _SOLVING:
+                moved = clicked(values, float(point.get("x", "nan")), float(point.get("y", "nan")))
             if moved is None:
                 return [no_update] * (3 * len(_NAMES) + 8)
             values, shown = moved, [moved[n] for n in _NAMES]
@@ -203,7 +210,8 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
             shown = [values[n] for n in _NAMES]
         if address is None:
             address = st.to_query(values)
-        out = update(values)
+        with _SOLVING:
+            out = update(values)
         errors = [out["errors"].get(n, "") for n in _NAMES]
         head = [address, *shown, *_styles(values), *errors]
         if out["errors"]:  # the last good views stay
@@ -232,8 +240,9 @@ def build(update: Any, clicked: Any, tables: Any, to_csv: Any, compare_table: An
     def flight(data: dict | None) -> Any:
         if not data:
             return no_update
-        found = st.evaluate(data["settings"])
-        return views.flight_view(found.setting) if found.setting else no_update
+        with _SOLVING:
+            found = st.evaluate(data["settings"])
+            return views.flight_view(found.setting) if found.setting else no_update
 
     @app.callback(
         Output("pinned", "data"),

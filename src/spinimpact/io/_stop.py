@@ -69,7 +69,9 @@ class _State:
 
 
 _RETRY_S = 0.02  # how soon a deferred Stopped is tried again
-_CALLBACK_MODULES = ("llvmlite.", "ctypes.")  # Python code that compiled code calls back
+# Python code whose exceptions are swallowed, not propagated: what compiled code calls back,
+# and the import system (its module locks' weak-reference callbacks run inside imports).
+_CALLBACK_MODULES = ("llvmlite.", "ctypes.", "importlib.")
 
 
 _state = _State()
@@ -135,10 +137,13 @@ def _skip_teardown() -> None:
 
 
 def _in_callback(frame: Any) -> bool:
-    """Whether ``frame`` or a frame below it runs in a module that compiled code calls
-    back (an exception raised there is swallowed, not propagated)."""
+    """Whether ``frame`` or a frame below it runs where an exception raised is printed and
+    swallowed, not propagated: in a module that compiled code calls back, in the import
+    system (a weak-reference callback of its module locks), or in a ``__del__``."""
     while frame is not None:
         if frame.f_globals.get("__name__", "").startswith(_CALLBACK_MODULES):
+            return True
+        if frame.f_code.co_name == "__del__":
             return True
         frame = frame.f_back
     return False
