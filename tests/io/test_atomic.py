@@ -193,6 +193,14 @@ def test_a_signal_outside_any_output_stops_at_once():
     assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored
 
 
+def _wait_for_the_retry() -> None:
+    """Run Python code for up to 10 s: a deferred stop is raised here (20 ms later)."""
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline:
+        time.sleep(0.001)
+    pytest.fail("not stopped after the callback returned")  # pragma: no cover
+
+
 def test_a_signal_inside_a_callback_from_compiled_code_stops_once_back(capfd):
     # llvmlite calls back into Python while Numba compiles; an exception raised there is
     # printed and swallowed by ctypes. The stop must wait until the callback has returned.
@@ -203,10 +211,7 @@ def test_a_signal_inside_a_callback_from_compiled_code_stops_once_back(capfd):
     with _stop.stop_on_signals(), pytest.raises(_stop.Stopped) as stopped:
         callback()  # through C, as compiled code calls it
         returned = True
-        deadline = time.monotonic() + 10
-        while time.monotonic() < deadline:  # the retry comes 20 ms later
-            time.sleep(0.001)
-        pytest.fail("not stopped after the callback returned")  # pragma: no cover
+        _wait_for_the_retry()
     assert returned
     assert stopped.value.signum == signal.SIGINT
     assert capfd.readouterr().err == ""  # nothing swallowed and printed
@@ -243,10 +248,7 @@ def test_a_signal_where_exceptions_are_swallowed_stops_once_back(where, capfd):
     with _stop.stop_on_signals(), pytest.raises(_stop.Stopped) as stopped:
         trigger()
         returned = True
-        deadline = time.monotonic() + 10
-        while time.monotonic() < deadline:  # the retry comes 20 ms later
-            time.sleep(0.001)
-        pytest.fail("not stopped after the callback returned")  # pragma: no cover
+        _wait_for_the_retry()
     assert returned
     assert stopped.value.signum == signal.SIGINT
     assert capfd.readouterr().err == ""  # nothing swallowed and printed
