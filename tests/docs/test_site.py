@@ -16,9 +16,7 @@ from __future__ import annotations
 import functools
 import html.parser
 import http.server
-import os
 import re
-import shutil
 import subprocess
 import sys
 import threading
@@ -27,11 +25,12 @@ from urllib.parse import unquote, urljoin, urlsplit
 
 import pytest
 
+from tests.viz.browser import launched
+
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILT = ROOT / "build" / "docs" / "html"
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 WIDTHS = (1280, 390)
 
 
@@ -78,17 +77,7 @@ def server(site):
 
 @pytest.fixture(scope="session")
 def browser():
-    if CHROMIUM is None:
-        if os.environ.get("CI"):  # CI installs chromium: without it the site is not tested
-            pytest.fail("no chromium installed, and CI must test the site in a browser")
-        pytest.skip("no chromium installed (.ci/run installs Debian's chromium)")
-    sync_api = pytest.importorskip("playwright.sync_api", reason="needs the playwright package")
-    with sync_api.sync_playwright() as p:
-        chromium = p.chromium.launch(
-            executable_path=CHROMIUM, args=["--no-sandbox", "--disable-gpu"]
-        )
-        yield chromium
-        chromium.close()
+    yield from launched(required_in_ci=True)
 
 
 def pages(site: Path) -> list[str]:

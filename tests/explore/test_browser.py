@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 import math
 import random
-import shutil
 import threading
 
 import numpy as np
@@ -35,9 +34,10 @@ from spinimpact import (
 from spinimpact.explore import settings as st
 from spinimpact.explore import views
 
+from tests.viz.browser import launched
+
 pytestmark = [pytest.mark.browser, pytest.mark.slow]
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 UNITS = {"m/s": 1.0, "km/h": 1 / 3.6, "mph": 0.44704}
 RPM = 2 * math.pi / 60  # rad/s per rpm
 _OVERFLOW = """() => {
@@ -67,15 +67,7 @@ def server():
 
 @pytest.fixture(scope="module")
 def browser():
-    if CHROMIUM is None:
-        pytest.skip("no chromium installed (.ci/run installs Debian's chromium)")
-    sync_api = pytest.importorskip("playwright.sync_api", reason="needs the playwright package")
-    with sync_api.sync_playwright() as p:
-        chromium = p.chromium.launch(
-            executable_path=CHROMIUM, args=["--no-sandbox", "--disable-gpu"]
-        )
-        yield chromium
-        chromium.close()
+    yield from launched()
 
 
 @pytest.fixture(scope="module")
