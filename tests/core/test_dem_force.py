@@ -59,6 +59,26 @@ def test_converges_to_the_impulse_space_law(model):
     assert errors[0] / errors[1] > 2.0**7.5
 
 
+def test_damped_micro_slip_converges_to_the_impulse_space_law():
+    """With Hunt-Crossley damping (e = 0.5) and the friction limit on the whole normal
+    force, as :func:`spinimpact.core.mdr.mdr_slip` takes it: the slip after the impact
+    converges at second order too (the loop extrapolates the rates to the new step;
+    measured 1,090 times over five halvings), and the restitution is 0.5 to 1e-6."""
+    omega = VN / R
+    force = _force("micro-slip", restitution=0.5, damping="hunt-crossley", speed=VN,
+                   friction_limit="total")  # fmt: skip
+    ratio = 4.0 * force.shear_modulus / force.modulus
+    ref = float(mdr_slip(R * omega, -VN, 3.5, MU, 0.5, ratio, springs=2048, steps=16384)[0])
+    ball = Body.solid_sphere(mass=force.mass, radius=R)
+    errors = []
+    for steps in (100, 3200):
+        run = dem.wall_impact(force, ball, 0.0, -VN, omega, dt=force.time_scale(VN) / steps)
+        errors.append(abs(float(run.vx) + R * float(run.omega) - ref) / VN)
+    assert float(run.vy) / VN == pytest.approx(0.5, abs=1e-6)
+    assert errors[1] < 1e-6
+    assert errors[0] / errors[1] > 2.0**7.5
+
+
 def test_few_cells_keep_the_history():
     """64 cells (merged as the contact grows over 2,000 steps) give the rebound of 65,536
     within 1e-3 of the incident slip, at stick (chi = 10) and at reversal (chi = 1.5)."""

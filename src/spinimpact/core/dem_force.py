@@ -273,15 +273,17 @@ def _cells_step(state, params, overlap, dxi1, dxi2, bound_factor):
                 state[base1 + j] += dxi1
                 state[base2 + j] += dxi2
         k = 8.0 * g * (top - lo)
+        c1, c2 = k * state[base1 + j], k * state[base2 + j]  # the cell's force
         if bound_factor >= 0.0:
-            limit = bound_factor * _band(e, r, overlap, lo, top) / k
-            size = math.hypot(state[base1 + j], state[base2 + j])
-            if size > limit:
-                scale = limit / size
+            limit = bound_factor * _band(e, r, overlap, lo, top)
+            square = c1 * c1 + c2 * c2
+            if square > limit * limit:
+                scale = limit / math.sqrt(square)
                 state[base1 + j] *= scale
                 state[base2 + j] *= scale
-        f1 += k * state[base1 + j]
-        f2 += k * state[base2 + j]
+                c1, c2 = c1 * scale, c2 * scale
+        f1 += c1
+        f2 += c2
         stiffness += k * fresh_share if j == fresh else k
     return f1, f2, stiffness, fresh, fresh_share
 

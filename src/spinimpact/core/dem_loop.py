@@ -3,9 +3,12 @@ two spheres, in plane motion, stepped as the DEM codes step them.
 
 The step is velocity Verlet in the form DEM codes use (LIGGGHTS, Kratos): a half kick
 with the forces of the last step, a drift of the positions, the contact forces at the new
-positions (the overlap's rate and the contact point's tangential velocity taken at the
-half step, the tangential displacement increment ``u_{n+1/2} dt``), and a second half
-kick. The contact opens where the overlap is no longer positive, and the run ends there.
+positions (the tangential displacement increment ``u_{n+1/2} dt``), and a second half
+kick. The dampings and the friction limit need the overlap's rate and the contact point's
+velocity at the new step, where the positions are: they are extrapolated from the last two
+half steps, ``(3 v_{n+1/2} - v_{n-1/2})/2``. (DEM codes take the half step's value, which
+makes a damped impact's rebound converge at first order only.) The contact opens where the
+overlap is no longer positive, and the run ends there.
 
 Conventions are the package's (``docs/conventions.md``): ``x`` along the wall, ``y`` up,
 spin ``omega`` counter-clockwise; the contact point of a sphere on the wall slips at
@@ -46,6 +49,7 @@ def wall_impact(params, state, mass, radius, inertia, vx, vy, omega, dt, max_ste
     y = radius
     fn, ft = 0.0, 0.0
     touched = False
+    rate_before, u_before = -vy, vx + radius * omega
     for step in range(1, max_steps + 1):
         vx += 0.5 * dt * ft / mass
         vy += 0.5 * dt * fn / mass
@@ -53,7 +57,11 @@ def wall_impact(params, state, mass, radius, inertia, vx, vy, omega, dt, max_ste
         y += dt * vy
         overlap = radius - y
         u = vx + radius * omega
-        fn, ft, _f2 = contact_force(state, params, overlap, -vy, u * dt, 0.0, u, 0.0)
+        # the rates at the new step, extrapolated from the last two half steps (the
+        # dampings and the friction limit need them where the positions are)
+        rate, slip = 1.5 * -vy - 0.5 * rate_before, 1.5 * u - 0.5 * u_before
+        rate_before, u_before = -vy, u
+        fn, ft, _f2 = contact_force(state, params, overlap, rate, u * dt, 0.0, slip, 0.0)
         vx += 0.5 * dt * ft / mass
         vy += 0.5 * dt * fn / mass
         omega += 0.5 * dt * radius * ft / inertia
@@ -84,6 +92,7 @@ def pair_impact(params, state, bodies, velocities, dt, max_steps, trace):
     p1x, p1y, p2x, p2y = 0.0, 0.0, 0.0, r1 + r2
     f1x, f1y, tq1, tq2 = 0.0, 0.0, 0.0, 0.0  # force on sphere 1; torques
     touched = False
+    rate_before, u_before = v[1] - v[4], -(v[0] - v[3]) + r1 * v[2] + r2 * v[5]
     for step in range(1, max_steps + 1):
         v[0] += 0.5 * dt * f1x / m1
         v[1] += 0.5 * dt * f1y / m1
@@ -102,7 +111,9 @@ def pair_impact(params, state, bodies, velocities, dt, max_steps, trace):
         overlap = r1 + r2 - distance
         rate = (v[0] - v[3]) * nx + (v[1] - v[4]) * ny
         u = (v[0] - v[3]) * tx + (v[1] - v[4]) * ty + r1 * v[2] + r2 * v[5]
-        fn, ft, _f2 = contact_force(state, params, overlap, rate, u * dt, 0.0, u, 0.0)
+        rate_new, slip = 1.5 * rate - 0.5 * rate_before, 1.5 * u - 0.5 * u_before
+        rate_before, u_before = rate, u
+        fn, ft, _f2 = contact_force(state, params, overlap, rate_new, u * dt, 0.0, slip, 0.0)
         f1x, f1y = -fn * nx + ft * tx, -fn * ny + ft * ty
         tq1, tq2 = r1 * ft, r2 * ft
         v[0] += 0.5 * dt * f1x / m1
