@@ -292,6 +292,10 @@ def main() -> None:
     from benchmarks.one_impact import report as one_impact  # one impact; the compiled law
 
     one_impact(console)
+    if fused.HAVE_NUMBA:
+        from benchmarks.dem_cost import report as dem_cost  # the DEM force in an njit loop
+
+        dem_cost(console.print)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,8 @@ steps per undamped Hertz contact duration (``STEPS``). The reference points are
 ``benchmarks/data/chung_ooi_2011`` (third-party digitizations, about 1 % reading error;
 its README gives the source).
 
-Run ``python -m benchmarks.dem_chung_ooi [--test N]``.
+Run ``python -m benchmarks.dem_chung_ooi [--test N]``; ``--figure PATH`` draws Test 6's
+figure (``docs/images/dem_test6.png``).
 """
 
 from __future__ import annotations
@@ -190,8 +191,13 @@ def test5() -> list[str]:
 #: Test 6's configurations: label -> ContactForce options (the damping ratio ``beta_t`` of
 #: the tangential damper, where there is one, is the normal one's, as the DEM codes take it).
 TEST6_MODELS = {
-    "micro-slip, Hunt-Crossley, limit mu N_el": {"model": "micro-slip", "damping": "hunt-crossley"},
-    "micro-slip, viscous, limit mu N_el": {"model": "micro-slip"},
+    "micro-slip, Hunt-Crossley, limit mu N_el": {
+        "model": "micro-slip",
+        "damping": "hunt-crossley",
+        "friction_limit": "elastic",
+    },
+    "micro-slip, Hunt-Crossley, limit mu N": {"model": "micro-slip", "damping": "hunt-crossley"},
+    "micro-slip, viscous, limit mu N_el": {"model": "micro-slip", "friction_limit": "elastic"},
     "micro-slip, viscous, limit mu N": {"model": "micro-slip", "friction_limit": "total"},
     "micro-slip, viscous, limit mu N, tangential damper": {
         "model": "micro-slip",
@@ -250,6 +256,45 @@ def test6() -> list[str]:
     return lines
 
 
+#: The configurations the figure draws (label in the legend -> TEST6_MODELS key).
+FIGURE_MODELS = {
+    "micro-slip (Hunt-Crossley, limit mu N)": "micro-slip, Hunt-Crossley, limit mu N",
+    "micro-slip (limit mu N_el)": "micro-slip, Hunt-Crossley, limit mu N_el",
+    "micro-slip + tangential damper": "micro-slip, viscous, limit mu N, tangential damper",
+    "scaled spring (no damper)": "scaled, viscous, limit mu N",
+    "scaled spring + damper (Kratos-like)": (
+        "scaled, viscous, limit mu N, tangential damper (Kratos-like)"
+    ),
+}
+
+
+def test6_figure(path) -> None:
+    """beta against chi: the reference curves and the configurations of FIGURE_MODELS."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    curves = reference("benchmark6_graph1.dat")
+    chi = np.geomspace(0.15, 25.0, 60)
+    fig, ax = plt.subplots(figsize=(10.0, 4.6))
+    for name, marker in (("Al. alloy", "o"), ("Nylon", "s")):
+        x, y = curves[name]
+        ax.plot(x, y, marker, mfc="none", color="k", label=f"Chung & Ooi DEM, {name.lower()}")
+    ax.plot(chi, np.minimum(chi - 1.0, 0.0), color="0.6", lw=1.0, label="rigid law")
+    for label, key in FIGURE_MODELS.items():
+        ax.plot(chi, test6_beta(TEST6_MODELS[key], chi, steps=400), label=label)
+    ax.set_xscale("log")
+    ax.set_xlabel(r"$\chi = 3.5\,\mu (1 + e)\, v_n / u^-$")
+    ax.set_ylabel(r"$\beta = -u^+/u^-$")
+    ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
+    ax.set_title("Chung & Ooi Test 6 (e = 0.5, mu = 0.4, backspin), DEM force in time")
+    ax.legend(fontsize=8, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    fig.tight_layout()
+    fig.savefig(path, dpi=80)
+    plt.close(fig)
+
+
 TESTS = {1: lambda: normal_tests(chung_ooi.TEST1), 2: lambda: normal_tests(chung_ooi.TEST2),
          3: test3, 4: test4, 5: test5, 6: test6}  # fmt: skip
 
@@ -257,7 +302,11 @@ TESTS = {1: lambda: normal_tests(chung_ooi.TEST1), 2: lambda: normal_tests(chung
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m benchmarks.dem_chung_ooi")
     parser.add_argument("--test", type=int, choices=sorted(TESTS), action="append")
+    parser.add_argument("--figure", type=Path, help="draw Test 6's figure into this PNG file")
     args = parser.parse_args(argv)
+    if args.figure is not None:
+        test6_figure(args.figure)
+        return 0
     for n in args.test or sorted(TESTS):
         print(f"Chung & Ooi (2011), Test {n}, with the DEM force ({STEPS} steps a contact)")
         print("\n".join(TESTS[n]()))

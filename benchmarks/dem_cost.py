@@ -19,7 +19,7 @@ import numpy as np
 
 from spinimpact import Body, dem
 
-CONTACTS = 2000
+CONTACTS = 1000
 STEPS = 200  #: steps per undamped Hertz contact duration
 
 
@@ -89,7 +89,7 @@ def _loops():
     return ours, linear
 
 
-def _best(fn, repeat=5):
+def _best(fn, repeat=3):
     times = []
     for _ in range(repeat):
         t = time.perf_counter()

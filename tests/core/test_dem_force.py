@@ -113,7 +113,7 @@ def test_compiled_loop_equals_the_python_loop():
 def test_two_spheres_are_the_reduced_sphere_on_a_wall():
     """Two equal spheres meeting head-on with equal spins: the spheres' changes are
     symmetric (to rounding), and the relative motion is that of the reduced body (half the
-    mass, same radius and zeta) on a wall with the pair's force, to 2e-3 (speed: 1e-4; the pair's
+    mass and radius, same zeta) on a wall with the pair's force, to 2e-3 (speed: 1e-4; the pair's
     contact normal turns a little as the centres move sideways; the wall's does not)."""
     ball = Body.solid_sphere(mass=4.0 / 3.0 * math.pi * R**3 * RHO, radius=R)
     pair = dem.ContactForce.two_spheres(youngs_modulus=E, poisson_ratio=NU, radius=R,
@@ -122,9 +122,11 @@ def test_two_spheres_are_the_reduced_sphere_on_a_wall():
     run = dem.pair_impact(pair, (ball, ball), ((0.0, VN, 1.0), (0.0, -VN, 1.0)), dt=dt)
     vx, vy, omega = (np.asarray(x) for x in (run.vx, run.vy, run.omega))
     assert vx[0] == -vx[1] and vy[0] == -vy[1] and omega[0] == omega[1]
-    reduced = Body.solid_sphere(mass=float(ball.mass) / 2, radius=R)
-    wall = dem.wall_impact(pair, reduced, 0.0, -2 * VN, 2.0, dt=dt)
-    assert 2 * omega[0] == pytest.approx(float(wall.omega), rel=2e-3)
+    # the reduced body: half the mass and, as the force's, half the radius (zeta stays 7/2);
+    # its spin 4 gives the pair's incident slip R (omega_1 + omega_2) = 2 R
+    reduced = Body.solid_sphere(mass=float(ball.mass) / 2, radius=R / 2)
+    wall = dem.wall_impact(pair, reduced, 0.0, -2 * VN, 4.0, dt=dt)
+    assert 4 * omega[0] == pytest.approx(float(wall.omega), rel=2e-3)
     # the tangent t = (-n_y, n_x) is -x here: the relative slide along t is vx_2 - vx_1
     assert vx[1] - vx[0] == pytest.approx(float(wall.vx), rel=2e-3)
     assert math.hypot(vx[0] - vx[1], vy[1] - vy[0]) == pytest.approx(

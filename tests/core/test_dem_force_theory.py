@@ -633,11 +633,6 @@ def test_wall_impact_rejects_bad_input(change, error, words):
         assert word in str(info.value)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="wall_impact accepts trace='yes' (a str where a bool is meant; ContactForce "
-    "rejects damping_capped='yes' with a TypeError)",
-)
 def test_wall_impact_rejects_a_trace_that_is_not_a_bool():
     """``trace`` is a flag: like ``damping_capped``, a non-bool is a ``TypeError``."""
     force, ball = _wall_force()
@@ -645,12 +640,6 @@ def test_wall_impact_rejects_a_trace_that_is_not_a_bool():
         dem.wall_impact(force, ball, 0.0, -0.2, 0.0, dt=1e-6, max_steps=10, trace="yes")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="wall_impact accepts a body whose mass (2x) or radius (2x) differs from the "
-    "force's, though its docstring says the force's radius and mass are the body's: with "
-    "sphere_on_wall(restitution=0.5) and a body of twice the mass the rebound is e = 0.601",
-)
 @pytest.mark.parametrize("mass, radius", [(2.0, 1.0), (1.0, 2.0)])
 def test_wall_impact_rejects_a_body_that_is_not_the_forces(mass, radius):
     """The force's effective mass and radius are, for a sphere on a wall, the sphere's: a

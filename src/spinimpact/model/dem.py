@@ -38,6 +38,8 @@ DAMPINGS = {"none": kernels.NO_DAMPING, "hunt-crossley": kernels.HUNT_CROSSLEY,
             "viscous": kernels.VISCOUS}  # fmt: skip
 #: What the friction limit multiplies ``mu`` by.
 LIMITS = ("elastic", "total")
+#: The most cells a contact's history may keep (its state: 25 MB).
+MAX_CELLS = 1 << 20
 
 
 def log_decrement_damping(restitution):
@@ -170,9 +172,10 @@ class ContactForce:
         Hunt-Crossley's ``a`` (s/m) or the viscous ``beta``; ``0`` with no damping.
     tangential_damping : float
         ``beta_t`` of the tangential viscous damping (``0``: none).
-    friction_limit : {"elastic", "total"}
-        ``mu`` times the elastic normal force, or the whole normal force (damping
-        included, as LIGGGHTS and Kratos take it).
+    friction_limit : {"total", "elastic"}
+        ``mu`` times the whole normal force, damping included (default: as the
+        impulse-space micro-slip law, :func:`spinimpact.core.mdr.mdr_slip`, LIGGGHTS and
+        Kratos take it), or ``mu`` times its elastic part.
     damping_capped : bool
         Whether the friction limit bounds the spring's and the damper's force together
         (otherwise the damper's force is added beyond it).
@@ -199,7 +202,7 @@ class ContactForce:
     damping: str = "none"
     damping_coefficient: float = 0.0
     tangential_damping: float = 0.0
-    friction_limit: str = "elastic"
+    friction_limit: str = "total"
     damping_capped: bool = True
     cells: int = 128
 
@@ -222,7 +225,8 @@ class ContactForce:
                              f"got {self.damping_coefficient!r}")  # fmt: skip
         if not isinstance(self.damping_capped, bool):
             raise TypeError(f"damping_capped must be True or False, got {self.damping_capped!r}")
-        whole("cells", self.cells, 2)
+        if whole("cells", self.cells, 2) > MAX_CELLS:
+            raise ValueError(f"cells must be at most {MAX_CELLS}, got {self.cells!r}")
 
     @classmethod
     def sphere_on_wall(cls, *, youngs_modulus, poisson_ratio, radius, mu, density=None,
@@ -298,6 +302,8 @@ class ContactForce:
 
 
 def _damping_for(restitution, damping, speed):
+    if speed is not None:
+        _positive("speed", speed)
     e = scalar("restitution", restitution)
     if not 0.0 < e <= 1.0:
         raise ValueError(f"restitution must be in (0, 1], got {restitution!r}")
@@ -342,11 +348,13 @@ class DemImpact(Result):
     trace: object
 
 
-#: The columns of :attr:`DemImpact.trace`.
+#: The columns of a trace (``DemImpact.trace``): time, overlap, forces, slip and energies.
 TRACE_COLUMNS = dem_loop.TRACE_COLUMNS
 
 
 def _trace(record, steps):
+    if not isinstance(record, bool):
+        raise TypeError(f"trace must be True or False, got {record!r}")
     return np.zeros((steps if record else 0, len(TRACE_COLUMNS)))
 
 
@@ -386,6 +394,13 @@ def wall_impact(force, body, vx, vy, omega, *, dt, max_steps=10_000_000, trace=F
     if not isinstance(body, Body):
         raise TypeError(f"body must be a Body, got {type(body).__name__}")
     m, r, zeta = float(body.mass), float(body.radius), float(body.zeta)
+    if not (math.isclose(m, force.mass, rel_tol=1e-9) and math.isclose(r, force.radius,
+                                                                     rel_tol=1e-9)):  # fmt: skip
+        raise ValueError(
+            f"body must be the force's sphere: its mass {m!r} kg and radius {r!r} m differ "
+            f"from the force's {force.mass!r} kg and {force.radius!r} m "
+            "(ContactForce.sphere_on_wall gives both)"
+        )
     step = _positive("dt", dt)
     steps = whole("max_steps", max_steps, 1)
     v_x, v_y, w = scalar("vx", vx), scalar("vy", vy), scalar("omega", omega)
