@@ -3,7 +3,8 @@
 One module per group of commands: :mod:`~spinimpact.cli.solve` (``solve``,
 ``report``), :mod:`~spinimpact.cli.batch`, :mod:`~spinimpact.cli.sweep`,
 :mod:`~spinimpact.cli.simulate`, :mod:`~spinimpact.cli.pictures` (``map``,
-``figures``), :mod:`~spinimpact.cli.planar` and :mod:`~spinimpact.cli.fit`; what they share is in
+``figures``), :mod:`~spinimpact.cli.planar`, :mod:`~spinimpact.cli.fit` and
+:mod:`~spinimpact.cli.track`; what they share is in
 :mod:`~spinimpact.cli._common`.
 
 Errors in the input are reported as one line on stderr with exit status 2 and
@@ -27,6 +28,7 @@ from .simulate import simulate_command
 from .solve import report_command, solve_command
 from .sphere import pair_command, sphere_command
 from .sweep import sweep_command
+from .track import track_command
 
 __all__ = ["main", "cli", "DEFAULTS"]
 
@@ -54,6 +56,7 @@ for _command in (
     pair_command,
     flight_command,
     fit_command,
+    track_command,
     problems_command,
     explore_command,
 ):

@@ -153,6 +153,10 @@ TERMS: dict[str, Term] = {
     "confidence": Term("Level of the confidence intervals"),
     "drops": Term("The file holds drop tests"),
     "corner": Term("Image file of the corner plot of the parameters (.png, .svg, .pdf)"),
+    # camera tracks
+    "up": Term("The track file's vertical axis"),
+    "sigma": Term("Noise of each measured coordinate", "m"),
+    "predict": Term("Predict each track's bounce and outgoing flight from its incoming samples"),
     # outputs
     "output": Term("Output file"),
     "output-dir": Term("Output directory (created if missing)"),

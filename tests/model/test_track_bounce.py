@@ -1,0 +1,105 @@
+"""Tracks across a bounce: the joint fit through the exact law, the prediction from the
+incoming samples alone, another bounce map in its place, and bad input."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from spinimpact.model.track import Air, as_track
+from spinimpact.model.track_bounce import flights
+from spinimpact.model.track_fit import fit_bounces
+from spinimpact.model.track_predict import predict_bounce
+
+from .track_cases import BALL, CONTACT_HEIGHT, shot
+
+TRUE = {"mu": 0.2, "kappa": 0.88, "contact_height": CONTACT_HEIGHT}
+
+
+@pytest.fixture(scope="module")
+def two_shots():
+    rng = np.random.default_rng(21)
+    return [shot(rng, before=0.3, after=0.15, name=f"shot {i}") for i in range(2)]
+
+
+@pytest.fixture(scope="module")
+def fitted(two_shots):
+    return fit_bounces([t for t, _ in two_shots], law="rigid", sigma=0.0015, intervals=False)
+
+
+@pytest.mark.slow  # a joint fit of two shots: about 10 s
+def test_the_shared_parameters_and_the_spin_after_are_recovered(fitted, two_shots):
+    for name, truth in TRUE.items():
+        z = (fitted[name] - truth) / fitted.standard_error[name]
+        assert abs(z) < 4.0, (name, fitted[name], fitted.standard_error[name])
+    for s, (_, truth) in zip(fitted.shots, two_shots, strict=True):
+        assert abs(s.contact_time - truth["contact_time"]) < 1e-3
+        # the law's spin after the bounce, from positions alone, within 15 % of the truth
+        np.testing.assert_allclose(s.spin_after, truth["after_spin"],
+                                   atol=0.15 * np.linalg.norm(truth["after_spin"]))  # fmt: skip
+        assert s.rms_after < 3.5e-3
+    assert fitted.names == ("mu", "kappa", "contact_height")
+    assert np.isnan(fitted.interval_low["mu"])  # intervals not asked for
+
+
+@pytest.mark.slow  # a joint fit: several seconds
+def test_a_fixed_parameter_is_held(two_shots):
+    tracks = [two_shots[0][0].select(two_shots[0][0].time > 0.15)]
+    f = fit_bounces(tracks, law="rigid", sigma=0.0015, intervals=False,
+                    fixed={"contact_height": CONTACT_HEIGHT, "kappa": 0.88})  # fmt: skip
+    assert f.free == ("mu",)
+    assert f["contact_height"] == CONTACT_HEIGHT
+    assert "(fixed)" in f.summary()
+
+
+def test_the_prediction_from_the_incoming_samples_holds_the_later_samples():
+    """With the truth's own law and parameters, a 0.45 s incoming flight (its spin
+    determined) predicts the later samples within the band (4 standard errors, outliers
+    aside) and within 1 cm rms."""
+    track, truth = shot(np.random.default_rng(8), before=0.45, after=0.15, spin=[0, 0, 100.0])
+    incoming = track.select(track.time < truth["contact_time"])
+    later = track.time > truth["contact_time"]
+    p = predict_bounce(incoming, TRUE, times=track.time[later], sigma=0.0015)
+    assert abs(p.contact_time - truth["contact_time"]) < 2e-3
+    good = np.ones(track.time.size, dtype=bool)
+    good[truth["outliers"]] = False
+    good = good[later]
+    err = p.position - track.position[later]
+    assert np.sqrt(np.mean(np.sum(err[good] ** 2, axis=1))) < 0.01
+    z = err[good] / np.hypot(p.standard_error[good], 0.0015)
+    assert np.all(np.abs(z) < 4.0), np.abs(z).max()
+    assert np.all(p.low < p.high)
+
+
+def test_another_bounce_map_replaces_the_law():
+    """A map that reverses the vertical velocity and keeps the rest: the ball leaves the
+    contact with exactly that velocity."""
+    air = Air(BALL)
+    state = np.array([[0.0, 0.0, 1.0, 5.0, 0.0, -1.0, 0.0, 50.0, 0.0, 0.5]])
+    shared = {"mu": np.zeros(1), "kappa": np.zeros(1), "contact_height": np.full(1, 0.76)}
+
+    def mirror(v, w):
+        return v * [1.0, 1.0, -1.0], w
+
+    out = flights(np.zeros(1), state, shared, air, "rigid", np.zeros((1, 0)), np.zeros((1, 0)),
+                  "z", rebound=mirror)  # fmt: skip
+    np.testing.assert_allclose(out["velocity_after"], out["velocity_before"] * [1, 1, -1])
+    assert out["contact_position"][0, 2] == pytest.approx(0.76, abs=1e-12)
+
+
+def test_bad_input_is_refused_naming_the_track(two_shots):
+    track, truth = two_shots[0]
+    early = track.select(track.time < truth["contact_time"] - 0.05)
+    with pytest.raises(ValueError, match="track shot 0: no bounce found"):
+        fit_bounces([early])
+    with pytest.raises(TypeError, match="tracks must be Track objects"):
+        fit_bounces([(track.time, track.position)])
+    with pytest.raises(ValueError, match="law must be one of rigid, walton"):
+        fit_bounces([track], law="stronge")
+    with pytest.raises(ValueError, match="fixed names an unknown parameter 'beta0'"):
+        fit_bounces([track], fixed={"beta0": 0.1})
+    with pytest.raises(ValueError, match="shared values missing: contact_height"):
+        predict_bounce(early, {"mu": 0.2, "kappa": 0.9})
+    flat = as_track(track.time, track.position * [1, 1, 0] + [0, 0, 2.0], name="high")
+    with pytest.raises(ValueError, match="track high: the incoming flight does not reach"):
+        predict_bounce(flat, {**TRUE, "contact_height": -50.0})
