@@ -28,6 +28,7 @@ figure (``docs/images/dem_test6.png``).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import math
 from pathlib import Path
 
@@ -229,8 +230,7 @@ def test6_beta(options, chi, case=chung_ooi.TEST6[0], steps=STEPS):
     damper = options.pop("tangential", False)
     force = _wall(case, **options)
     if damper:
-        force = dem.ContactForce(**{**force.__dict__, "tangential_damping":
-                                    force.damping_coefficient})  # fmt: skip
+        force = dataclasses.replace(force, tangential_damping=force.damping_coefficient)
     ball = Body.solid_sphere(mass=force.mass, radius=case.radius)
     dt = force.time_scale(case.normal_speed) / steps
     out = []

@@ -16,6 +16,7 @@ Run ``python -m benchmarks.dem_convergence``.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from spinimpact import Body, dem
@@ -78,6 +79,93 @@ def table():
     return out
 
 
+def default_cells_table():
+    """``model -> [(steps, error/vn)]`` for micro-slip and history with the default cells."""
+    omega = VN / R
+    out = {}
+    for model in ("micro-slip", "history"):
+        ref = reference(model, omega)
+        force = dataclasses.replace(_force(model), cells=dem.ContactForce.cells)
+        ball = Body.solid_sphere(mass=force.mass, radius=R)
+        out[model] = []
+        for steps in STEPS:
+            run = dem.wall_impact(force, ball, 0.0, -VN, omega, dt=force.time_scale(VN) / steps)
+            out[model].append((steps, (float(run.vx) + R * float(run.omega) - ref) / VN))
+    return out
+
+
+def restitution_table():
+    """``damping -> [(steps, e - 0.5)]``: the normal restitution's error, e = 0.5."""
+    out = {}
+    for damping in ("viscous", "hunt-crossley"):
+        force = dem.ContactForce.sphere_on_wall(youngs_modulus=E, poisson_ratio=NU, radius=R,
+                                                density=RHO, mu=0.0, restitution=0.5,
+                                                damping=damping, speed=VN)  # fmt: skip
+        ball = Body.solid_sphere(mass=force.mass, radius=R)
+        out[damping] = [
+            (steps, float(dem.wall_impact(force, ball, 0.0, -VN, 0.0,
+                                          dt=force.time_scale(VN) / steps).vy) / VN - 0.5)
+            for steps in STEPS
+        ]  # fmt: skip
+    return out
+
+
+#: Test 6's incidences (chi) at which the cells are compared.
+CELLS_CHI = (0.5, 1.19, 1.5, 2.09, 3.0, 5.75, 10.0, 24.0)
+
+
+def cells_table(cells=(16, 32, 64, 128), steps=(200, 1000)):
+    """The history's resolution on Test 6 (default micro-slip, viscous damping, e = 0.5):
+    ``(steps, cells) -> the largest |beta - beta_fine|`` over :data:`CELLS_CHI`, with
+    ``beta_fine`` from 32,768 cells at the same steps; ``("step", steps)``: the step's own
+    error, 32,768 cells at ``steps`` against 4,000 steps."""
+    import numpy as np
+
+    from . import chung_ooi, dem_chung_ooi
+
+    chi = np.array(CELLS_CHI)
+    case = chung_ooi.TEST6[0]
+
+    def beta(n_cells, n_steps):
+        return dem_chung_ooi.test6_beta({"cells": n_cells}, chi, case, n_steps)
+
+    out, finest = {}, beta(1 << 15, 4000)
+    for n_steps in steps:
+        fine = beta(1 << 15, n_steps)
+        out[("step", n_steps)] = float(np.abs(fine - finest).max())
+        for n_cells in cells:
+            out[(n_steps, n_cells)] = float(np.abs(beta(n_cells, n_steps) - fine).max())
+    return out
+
+
+def reentry(cells=(16, 128, 4096), cycles=10):
+    """``cells -> F_end/F_start``: a contact pressed to 2e-5 m, loaded tangentially to half
+    its full-slip displacement, then its overlap cycled between 0.9 and 1 of that (20 steps
+    each way) with no tangential motion; the ratio of the tangential force after the cycles
+    to that before them."""
+    base = dem.ContactForce.sphere_on_wall(youngs_modulus=E, poisson_ratio=NU, radius=R,
+                                           density=RHO, mu=MU)  # fmt: skip
+    d0 = 2e-5
+    a = math.sqrt(R * d0)
+    slide = 3.0 * MU * 4.0 / 3.0 * base.modulus * math.sqrt(R) * d0**1.5
+    slide /= 16.0 * base.shear_modulus * a
+    out = {}
+    for n in cells:
+        force = dataclasses.replace(base, cells=n)
+        state = force.new_state()
+        for k in range(1, 201):
+            force.step(state, d0 * k / 200, 0.0, (0.0, 0.0))
+        for _ in range(100):
+            start = force.step(state, d0, 0.0, (0.5 * slide / 100, 0.0))[1]
+        for _ in range(cycles):
+            for k in range(1, 21):
+                force.step(state, d0 * (1.0 - 0.1 * k / 20), 0.0, (0.0, 0.0))
+            for k in range(1, 21):
+                end = force.step(state, d0 * (0.9 + 0.1 * k / 20), 0.0, (0.0, 0.0))[1]
+        out[n] = end / start
+    return out
+
+
 def main():
     print("slip after the impact, (DEM - independent solution)/vn, and the observed order")
     print(f"{'steps':>6s} " + " ".join(f"{m:>20s}" for m in MODELS))
@@ -88,6 +176,29 @@ def main():
             _, err, order = data[model][i]
             cells.append(f"{err:11.2e} ({order:5.2f})")
         print(f"{steps:6d} " + " ".join(f"{c:>20s}" for c in cells))
+    print()
+    print(f"the same with the default {dem.ContactForce.cells} cells, (DEM - independent)/vn")
+    print(f"{'steps':>6s} {'micro-slip':>12s} {'history':>12s}")
+    default = default_cells_table()
+    for i, steps in enumerate(STEPS):
+        print(f"{steps:6d} {default['micro-slip'][i][1]:12.2e} {default['history'][i][1]:12.2e}")
+    print()
+    print("normal restitution e = 0.5: (DEM - 0.5), viscous and Hunt-Crossley damping")
+    print(f"{'steps':>6s} {'viscous':>12s} {'Hunt-Crossley':>14s}")
+    rest = restitution_table()
+    for i, steps in enumerate(STEPS):
+        print(f"{steps:6d} {rest['viscous'][i][1]:12.2e} {rest['hunt-crossley'][i][1]:14.2e}")
+    print()
+    print("Test 6 (micro-slip, viscous, e = 0.5), largest |beta - beta(32,768 cells)| over chi "
+          f"= {', '.join(map(str, CELLS_CHI))}")  # fmt: skip
+    resolution = cells_table()
+    for steps in (200, 1000):
+        cells = ", ".join(f"{n} cells {resolution[(steps, n)]:.1e}" for n in (16, 32, 64, 128))
+        print(f"  {steps} steps: {cells}; the step's own error {resolution[('step', steps)]:.1e}")
+    print()
+    ratios = ", ".join(f"{n} cells {r:.4f}" for n, r in reentry().items())
+    print(f"overlap cycled 10 times between 0.9 and 1 of its peak: tangential force after / "
+          f"before: {ratios}")  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@ Run ``python -m benchmarks.dem_cost`` (``make bench`` prints it too).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 
@@ -89,7 +90,7 @@ def _loops():
     return ours, linear
 
 
-def _best(fn, repeat=3):
+def _best(fn, repeat=5):
     times = []
     for _ in range(repeat):
         t = time.perf_counter()
@@ -125,7 +126,7 @@ def rows():
         ("micro-slip, 128 cells", {"model": "micro-slip"}),
         ("micro-slip, 32 cells", {"model": "micro-slip", "cells": 32}),
     ):
-        force = dem.ContactForce(**{**base.__dict__, **options})
+        force = dataclasses.replace(base, **options)
         params = force.parameters()
         states = np.zeros((CONTACTS, force.new_state().size))
         ours(params, states[:2], m, r, inertia, -vn, omegas[:2], dt)  # compile

@@ -13,6 +13,7 @@ Chung & Ooi's Test 6 sphere with backspin, stepped by :func:`spinimpact.dem.wall
 with and without the viscous tangential damper DEM codes add.
 """
 
+import dataclasses
 import math
 
 import matplotlib.pyplot as plt
@@ -32,7 +33,7 @@ amplitude = 0.8 * slide
 
 def cycle(model, steps=400):
     """Press to ``overlap``, then move the contact point 0 -> +A -> -A -> +A."""
-    law = dem.ContactForce(**{**force.__dict__, "model": model})
+    law = dataclasses.replace(force, model=model)
     state = law.new_state()
     for k in range(1, 201):  # the normal loading, no tangential motion
         law.step(state, overlap * k / 200, 0.0, (0.0, 0.0))
@@ -74,12 +75,13 @@ left.set_ylabel(r"tangential force / $\mu N$")
 left.legend(fontsize=8)
 
 ball = Body.solid_sphere(mass=force.mass, radius=0.1)
-for label, options in (("micro-slip", {}), ("micro-slip + tangential damper",
-                                             {"tangential_damping": 0.2553})):  # fmt: skip
+for label, damper in (("micro-slip", False), ("micro-slip + tangential damper", True)):
     law = dem.ContactForce.sphere_on_wall(
         youngs_modulus=7.0e10, poisson_ratio=0.33, radius=0.1, density=2700.0, mu=0.4,
-        restitution=0.5, **options,
+        restitution=0.5,
     )  # fmt: skip
+    if damper:  # the normal damping's ratio, as DEM codes size the tangential damper
+        law = dataclasses.replace(law, tangential_damping=law.damping_coefficient)
     run = dem.wall_impact(law, ball, 0.0, -0.2, 0.7 * 0.2 / 0.1, dt=law.time_scale(0.2) / 1000,
                           trace=True)  # fmt: skip
     trace = np.asarray(run.trace)

@@ -159,3 +159,45 @@ def test_parameters_round_trip():
     assert p[dem_force.P_NORMAL_COEF] == pytest.approx(dem.viscous_damping(0.5))
     assert p[dem_force.P_LIMIT_TOTAL] == 1.0 and p[dem_force.P_TANGENT_COEF] == 0.1
     assert force.new_state().size == dem_force.state_size(4096)
+
+
+def test_refused_inputs_name_what_is_wrong():
+    """A step too coarse for the contact, spheres that are not the force's, a state that
+    does not fit the parameters, NaN, and a displacement that is not two numbers."""
+    force = _force("micro-slip", cells=32)
+    ball = Body.solid_sphere(mass=force.mass, radius=R)
+    with pytest.raises(ValueError, match="dt = .* tenth of the contact's duration"):
+        dem.wall_impact(force, ball, 0.0, -VN, 0.0, dt=force.time_scale(VN) / 5)
+    pair = dem.ContactForce.two_spheres(youngs_modulus=E, poisson_ratio=NU, radius=R,
+                                        density=RHO, mu=MU)  # fmt: skip
+    dt = pair.time_scale(2 * VN) / 100
+    small = Body.solid_sphere(mass=1.0, radius=R)
+    with pytest.raises(ValueError, match="bodies must be the force's spheres"):
+        dem.pair_impact(pair, (ball, small), ((0, VN, 0), (0, -VN, 0)), dt=dt)
+    with pytest.raises(TypeError, match="bodies must be two Body"):
+        dem.pair_impact(pair, (ball,), ((0, VN, 0), (0, -VN, 0)), dt=dt)
+    with pytest.raises(TypeError, match="velocities must be"):
+        dem.pair_impact(pair, (ball, ball), (0, VN, 0), dt=dt)
+    with pytest.raises(ValueError, match=r"vy of sphere 2 \(0.1\)"):
+        dem.pair_impact(pair, (ball, ball), ((0, 0.0, 0), (0, 0.1, 0)), dt=dt)
+    with pytest.raises(ValueError, match="state must hold 101 floats"):
+        force.step(np.zeros(11), 1e-6, 0.0, (0.0, 0.0))
+    with pytest.raises(TypeError, match="state must be a 1-D float64"):
+        force.step(np.zeros(101, dtype=np.float32), 1e-6, 0.0, (0.0, 0.0))
+    with pytest.raises(TypeError, match="displacement must be two numbers"):
+        force.step(force.new_state(), 1e-6, 0.0, 1e-7)
+    with pytest.raises(ValueError, match="overlap must be finite"):
+        force.step(force.new_state(), float("nan"), 0.0, (0.0, 0.0))
+    # the compiled path refuses them too, without the model layer's checks
+    with pytest.raises(ValueError, match="state is smaller"):
+        dem.contact_force(np.zeros(11), force.parameters(), 1e-6, 0.0, 0.0, 0.0, 0.0, 0.0)
+    with pytest.raises(ValueError, match="NaN"):
+        dem.contact_force(force.new_state(), force.parameters(), float("nan"), 0.0, 0.0, 0.0,
+                          0.0, 0.0)  # fmt: skip
+    with pytest.raises(ValueError, match="restitution must be 1 with damping='none'"):
+        dem.ContactForce.sphere_on_wall(youngs_modulus=E, poisson_ratio=NU, radius=R,
+                                        density=RHO, mu=MU, restitution=0.5,
+                                        damping="none")  # fmt: skip
+    assert dem.viscous_damping(0.5) == dem.viscous_damping(np.float64(0.5))
+    with pytest.raises(ValueError, match="single number"):
+        dem.viscous_damping([0.5])

@@ -324,10 +324,18 @@ def contact_force(state, params, overlap, overlap_rate, dxi1, dxi2, u1, u2):
     overlap_rate : float
         ``d delta/dt``, m/s (for the normal damping).
     dxi1, dxi2 : float
-        The tangential displacement of the contact point over the step, m (``u dt``).
+        The tangential displacement of the contact point over the step, m (``u dt``), in
+        a basis of the tangent plane that the caller keeps for the contact. Where the
+        contact normal turns, carry the basis along with it (as DEM codes rotate their
+        shear history into the new tangent plane); the state's components then stay valid
+        as they are.
     u1, u2 : float
         The contact point's tangential velocity, m/s (for the tangential damping).
     """
+    if state.size < HEADER + 3 * int(params[P_CELLS]) + 1:
+        raise ValueError("contact_force: state is smaller than params' cells need (new_state)")
+    if not (overlap == overlap and dxi1 == dxi1 and dxi2 == dxi2):
+        raise ValueError("contact_force: the overlap or the displacement is NaN")
     model = int(params[P_MODEL])
     if overlap <= 0.0:  # open: the contact forgets its history
         state[:] = 0.0

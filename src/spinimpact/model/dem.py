@@ -79,7 +79,6 @@ def _viscous_restitution(beta):
     return -float(run.y_events[0][0][1])
 
 
-@functools.lru_cache(maxsize=256)
 def viscous_damping(restitution):
     r"""The viscous damping ratio ``beta`` with which Hertz's spring rebounds with
     Newton's restitution ``e`` exactly (the damping force
@@ -95,18 +94,24 @@ def viscous_damping(restitution):
     >>> round(viscous_damping(0.5), 4), round(log_decrement_damping(0.5), 4)
     (0.2553, 0.2155)
     """
-    from scipy.optimize import brentq
-
     e = scalar("restitution", restitution)
     if not 0.0 < e <= 1.0:
         raise ValueError(f"restitution must be in (0, 1], got {restitution!r}")
+    return _viscous_beta(e)
+
+
+@functools.lru_cache(maxsize=256)
+def _viscous_beta(e):
+    """:func:`viscous_damping` of a checked float (cached)."""
+    from scipy.optimize import brentq
+
     if e == 1.0:
         return 0.0
     hi = 0.5
     while _viscous_restitution(hi) > e:
         hi *= 2.0
         if hi > 1e6:
-            raise ValueError(f"restitution = {restitution!r} is below what this damping reaches")
+            raise ValueError(f"restitution = {e!r} is below what this damping reaches")
     return float(brentq(lambda b: _viscous_restitution(b) - e, 0.0, hi, xtol=1e-14,
                         rtol=1e-12))  # fmt: skip
 
@@ -116,6 +121,33 @@ def _positive(name, value):
     if not (x > 0.0 and math.isfinite(x)):
         raise ValueError(f"{name} must be a positive finite number, got {value!r}")
     return x
+
+
+def _finite(name, value):
+    x = scalar(name, value)
+    if not math.isfinite(x):
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return x
+
+
+def _two(name, value):
+    """Two finite numbers (a tangential vector's components)."""
+    try:
+        a, b = value
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be two numbers (its tangential components), "
+                        f"got {value!r}") from None  # fmt: skip
+    return _finite(f"{name}[0]", a), _finite(f"{name}[1]", b)
+
+
+def _resolved(dt, duration, speed):
+    """``dt`` checked against the contact's duration at the normal ``speed``: at least ten
+    steps a contact (fewer cannot resolve it: the rebound comes out wrong by any amount)."""
+    if dt > duration / 10.0:
+        raise ValueError(f"dt = {dt!r} s is more than a tenth of the contact's duration "
+                         f"({duration:.3g} s at {speed:.3g} m/s): take at least 10 steps a "
+                         "contact")  # fmt: skip
+    return dt
 
 
 def _choice(name, value, options):
@@ -286,11 +318,18 @@ class ContactForce:
         contact point's tangential displacement over the step (m, two components),
         ``velocity``: its tangential velocity (m/s, for the tangential damping).
         """
-        d1, d2 = displacement
-        u1, u2 = velocity
-        out = kernels.contact_force(state, self.parameters(), float(overlap),
-                                    float(overlap_rate), float(d1), float(d2), float(u1),
-                                    float(u2))  # fmt: skip
+        if not (isinstance(state, np.ndarray) and state.dtype == np.float64
+                and state.ndim == 1):  # fmt: skip
+            raise TypeError(f"state must be a 1-D float64 array (new_state()), got {state!r}")
+        size = kernels.state_size(self.cells)
+        if state.size != size:
+            raise ValueError(f"state must hold {size} floats for cells = {self.cells}, got "
+                             f"{state.size} (use new_state())")  # fmt: skip
+        d1, d2 = _two("displacement", displacement)
+        u1, u2 = _two("velocity", velocity)
+        out = kernels.contact_force(state, self.parameters(), _finite("overlap", overlap),
+                                    _finite("overlap_rate", overlap_rate), d1, d2, u1,
+                                    u2)  # fmt: skip
         return tuple(float(x) for x in out)
 
     def time_scale(self, speed):
@@ -307,7 +346,9 @@ def _damping_for(restitution, damping, speed):
     e = scalar("restitution", restitution)
     if not 0.0 < e <= 1.0:
         raise ValueError(f"restitution must be in (0, 1], got {restitution!r}")
-    _choice("damping", damping, ("viscous", "hunt-crossley"))
+    _choice("damping", damping, tuple(DAMPINGS))
+    if damping == "none" and e != 1.0:
+        raise ValueError(f"restitution must be 1 with damping='none', got {restitution!r}")
     if e == 1.0:
         return "none", 0.0
     if damping == "viscous":
@@ -406,6 +447,7 @@ def wall_impact(force, body, vx, vy, omega, *, dt, max_steps=10_000_000, trace=F
     v_x, v_y, w = scalar("vx", vx), scalar("vy", vy), scalar("omega", omega)
     if not v_y < 0.0:
         raise ValueError(f"vy must be negative (towards the wall), got {vy!r}")
+    _resolved(step, force.time_scale(-v_y), -v_y)
     rows = _trace(trace, min(steps, 1 << 22))
     out = dem_law.wall_impact(force.parameters(), force.new_state(), m, r,
                               m * r * r / (zeta - 1.0), v_x, v_y, w, step, steps, rows)  # fmt: skip
@@ -426,20 +468,35 @@ def pair_impact(force, bodies, velocities, *, dt, max_steps=10_000_000, trace=Fa
     """
     if not isinstance(force, ContactForce):
         raise TypeError(f"force must be a ContactForce, got {type(force).__name__}")
-    one, two = bodies
-    for name, b in (("bodies[0]", one), ("bodies[1]", two)):
+    if not (isinstance(bodies, (tuple, list)) and len(bodies) == 2):
+        raise TypeError(f"bodies must be two Body objects, got {bodies!r}")
+    for name, b in (("bodies[0]", bodies[0]), ("bodies[1]", bodies[1])):
         if not isinstance(b, Body):
             raise TypeError(f"{name} must be a Body, got {type(b).__name__}")
+    shape = np.shape(velocities) if isinstance(velocities, (tuple, list, np.ndarray)) else ()
+    if shape != (2, 3):
+        raise TypeError(f"velocities must be ((vx_1, vy_1, omega_1), (vx_2, vy_2, omega_2)), "
+                        f"got {velocities!r}")  # fmt: skip
     v = np.array([scalar(f"velocities[{i}][{j}]", velocities[i][j])
                   for i in range(2) for j in range(3)])  # fmt: skip
     if not v[4] < v[1]:
-        raise ValueError(f"the spheres must close: vy of sphere 2 ({v[4]!r}) must be below "
-                         f"vy of sphere 1 ({v[1]!r})")  # fmt: skip
+        raise ValueError(f"the spheres must close: vy of sphere 2 ({float(v[4])!r}) must be "
+                         f"below vy of sphere 1 ({float(v[1])!r})")  # fmt: skip
     data = []
-    for b in (one, two):
+    for b in bodies:
         m, r, z = float(b.mass), float(b.radius), float(b.zeta)
         data += [m, r, m * r * r / (z - 1.0)]
+    m_star = data[0] * data[3] / (data[0] + data[3])
+    r_star = data[1] * data[4] / (data[1] + data[4])
+    if not (math.isclose(m_star, force.mass, rel_tol=1e-9)
+            and math.isclose(r_star, force.radius, rel_tol=1e-9)):  # fmt: skip
+        raise ValueError(
+            f"bodies must be the force's spheres: their reduced mass {m_star!r} kg and radius "
+            f"{r_star!r} m differ from the force's {force.mass!r} kg and {force.radius!r} m "
+            "(ContactForce.two_spheres gives both)"
+        )
     step = _positive("dt", dt)
+    _resolved(step, force.time_scale(float(v[1] - v[4])), float(v[1] - v[4]))
     steps = whole("max_steps", max_steps, 1)
     rows = _trace(trace, min(steps, 1 << 22))
     count, duration = dem_law.pair_impact(force.parameters(), force.new_state(),
