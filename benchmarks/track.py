@@ -199,7 +199,8 @@ def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton")) -> dict:
         fits = {
             law: fit_bounces(
                 [s["track"] for s in train],
-                law=law,
+                law=law.split("+")[0],
+                free_lift=law.endswith("+lift"),
                 bounces=[s["bounce"] for s in train],
                 intervals=False,
             )

@@ -271,12 +271,12 @@ def find_bounce(track: Track, *, window: float = 0.035, gravity: float = GRAVITY
                 max_height: float | None = None) -> Bounce:  # fmt: skip
     """Find the contact with a level surface in a track, from its positions alone.
 
-    The lowest sample ``i`` of the running median of five heights (so that an isolated
-    outlier is not taken for the table) is the candidate; parabolas of curvature ``g`` are
-    fitted to the heights within ``window`` before it and after it (``i`` itself in neither;
-    each refitted once without the samples more than 5 mm off), and must show the ball coming
-    down (``v < -0.5`` m/s) and going up (``v > 0.3`` m/s). The contact is where the two
-    parabolas meet.
+    The lowest sample ``i`` within two of the lowest point of the running median of five
+    heights (so that an isolated outlier is not taken for the table) is the candidate;
+    parabolas of curvature ``g`` are fitted to the heights within ``window`` before it and
+    after it (``i`` itself in neither; each refitted once without the samples more than 5 mm
+    off), and must show the ball coming down (``v < -0.5`` m/s) and going up (``v > 0.3``
+    m/s). The contact is where the two parabolas meet.
 
     Parameters
     ----------
@@ -303,7 +303,9 @@ def find_bounce(track: Track, *, window: float = 0.035, gravity: float = GRAVITY
     t = track.time
     padded = np.pad(z, 2, mode="edge")
     smooth = np.median(np.lib.stride_tricks.sliding_window_view(padded, 5), axis=1)
-    i = int(np.argmin(smooth))
+    near = int(np.argmin(smooth))  # then the lowest sample next to it
+    lo = max(near - 2, 0)
+    i = lo + int(np.argmin(z[lo : near + 3]))
     where = f"track {track.name}: no bounce found (lowest sample at row {track.rows[i]}, "
     if max_height is not None and z[i] > max_height:
         raise ValueError(where + f"height {z[i]:.4g} m, above {max_height:g} m)")
@@ -335,6 +337,12 @@ class Air:
     def aero(self, drag_coefficient: float) -> AeroConstants:
         return aero_of(self.ball, drag_coefficient=float(drag_coefficient),
                        air_density=self.air_density, gravity=self.gravity)  # fmt: skip
+
+    def with_lift(self, lift_slope: float) -> Air:
+        """The same air, with the ball's lift slope ``a`` (its ``C_max`` kept)."""
+        if lift_slope == self.ball.lift_slope:
+            return self
+        return Air(self.ball.replace(lift_slope=float(lift_slope)), self.air_density, self.gravity)
 
     def per_ball(self, drag_coefficient: np.ndarray) -> AeroConstants:
         """The constants with one drag coefficient a ball: ``k_d = rho A C_D / 2m`` as an

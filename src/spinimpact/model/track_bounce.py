@@ -27,11 +27,13 @@ __all__ = ["flights", "to_surface", "LAWS", "BOUNDS", "CONTACT"]
 LAWS = ("rigid", "walton")
 #: Each shared parameter's range.
 BOUNDS = {"mu": (0.0, 10.0), "kappa": (0.0, 1.0), "beta0": (-1.0, 1.0),
-          "contact_height": (-np.inf, np.inf)}  # fmt: skip
+          "contact_height": (-np.inf, np.inf), "lift_slope": (0.0, 5.0)}  # fmt: skip
 STEP = np.r_[np.full(3, 1e-6), np.full(3, 1e-5), np.full(3, 1e-2), 1e-4]
 SCALE = np.r_[np.full(3, 1e-3), np.full(3, 1e-2), np.full(3, 30.0), 0.05]
-SHARED_STEP = {"mu": 1e-5, "kappa": 1e-5, "beta0": 1e-5, "contact_height": 1e-6}
-SHARED_SCALE = {"mu": 0.05, "kappa": 0.05, "beta0": 0.1, "contact_height": 1e-3}
+SHARED_STEP = {"mu": 1e-5, "kappa": 1e-5, "beta0": 1e-5, "contact_height": 1e-6,
+               "lift_slope": 1e-5}  # fmt: skip
+SHARED_SCALE = {"mu": 0.05, "kappa": 0.05, "beta0": 0.1, "contact_height": 1e-3,
+                "lift_slope": 0.1}  # fmt: skip
 
 
 #: What :func:`flights` gives at each contact, besides its time.
@@ -96,7 +98,9 @@ def to_surface(t0: np.ndarray, p: np.ndarray, v: np.ndarray, w: np.ndarray, aero
 def flights(t0: np.ndarray, states: np.ndarray, shared: dict[str, np.ndarray], air: Air,
             law: str, before: np.ndarray, after: np.ndarray, up: str,
             rebound: Any = None) -> dict[str, np.ndarray]:  # fmt: skip
-    """Fly ``b`` states through their bounce (track's frame); every ball in one batch.
+    """Fly ``b`` states through their bounce (track's frame); every ball in one batch (one
+    batch for each value of ``shared["lift_slope"]``, when given: the ball's lift slope, which
+    the core integrator takes as one number).
 
     Parameters
     ----------
@@ -124,6 +128,17 @@ def flights(t0: np.ndarray, states: np.ndarray, shared: dict[str, np.ndarray], a
         never reaches the surface); ``contact_time`` ``(b,)``, ``contact_position``,
         ``velocity_before``, ``spin_before``, ``velocity_after``, ``spin_after`` ``(b, 3)``.
     """
+    if "lift_slope" in shared:
+        slopes, which = np.unique(shared["lift_slope"], return_inverse=True)
+        if len(slopes) > 1:
+            parts = []
+            for k, a in enumerate(slopes):
+                i = which == k
+                sub = {n: v[i] for n, v in shared.items() if n != "lift_slope"}
+                parts.append((i, flights(t0[i], states[i], sub, air.with_lift(a), law, before[i],
+                                         after[i], up, rebound)))  # fmt: skip
+            return {key: _merged(parts, key, len(states)) for key in parts[0][1]}
+        air = air.with_lift(float(slopes[0]))
     rot = frame_rotation(up)
     ball = air.ball
     radius, body = ball.radius, ball.body
@@ -168,6 +183,15 @@ def flights(t0: np.ndarray, states: np.ndarray, shared: dict[str, np.ndarray], a
     for k, x in (("velocity_before", c["velocity"]), ("spin_before", c["spin"]),
                  ("velocity_after", bounce.velocity), ("spin_after", bounce.spin)):  # fmt: skip
         out[k] = np.where(hit[:, None], x @ rot, np.nan)
+    return out
+
+
+def _merged(parts: list, key: str, b: int) -> np.ndarray:
+    """One output of :func:`flights` joined from its batches ``[(mask, out), ...]``."""
+    first = parts[0][1][key]
+    out = np.empty((b, *first.shape[1:]))
+    for i, part in parts:
+        out[i] = part[key]
     return out
 
 

@@ -213,8 +213,8 @@ def _split(track: Track, bounce: Bounce | None, min_after: int) -> int:
 
 def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground | str = "table",
                 *, law: str = "rigid", fixed: dict[str, float] | None = None,
-                bounces: Any = None, sigma: float | None = None, confidence: float = 0.95,
-                intervals: bool = True, air_density: float = AIR_DENSITY,
+                free_lift: bool = False, bounces: Any = None, sigma: float | None = None,
+                confidence: float = 0.95, intervals: bool = True, air_density: float = AIR_DENSITY,
                 gravity: float = GRAVITY, min_after: int = 3) -> BounceFit:  # fmt: skip
     """Fit the incoming and outgoing flights of tracks jointly through the exact bounce.
 
@@ -231,6 +231,10 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
         restitution (``beta0`` shared, starting at 0).
     fixed : dict, optional
         Shared parameters held at given values (``{"contact_height": 0.759}``).
+    free_lift : bool
+        Fit the ball's lift slope ``a`` too (shared; :mod:`spinimpact.core.aero`): the spin
+        the law gives after the bounce, seen in the outgoing curvature, determines it. The
+        result's ``ball`` then carries the fitted slope, and predictions fly with it.
     bounces : sequence of Bounce, optional
         Where each track is split (default: found from its positions).
     sigma : float, optional
@@ -271,6 +275,7 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
         raise ValueError(f"confidence must be in (0, 1), got {confidence!r}")
     ball_, ground_ = as_ball(ball), as_ground(surface)
     names = ("mu", "kappa", "contact_height") + (("beta0",) if law == "walton" else ())
+    names += ("lift_slope",) if free_lift or "lift_slope" in (fixed or {}) else ()
     fixed = dict(fixed or {})
     for n, v in fixed.items():
         if n not in names:
@@ -294,6 +299,7 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
     if len(ups) > 1:
         raise ValueError("the tracks' frames differ (up = " + ", ".join(sorted(ups)) + ")")
     init = {"mu": ground_.mu, "kappa": ground_.kappa, "contact_height": float(np.median(heights)),
+            "lift_slope": ball_.lift_slope,
             "beta0": 0.0}  # fmt: skip
     prob = Joint(tracks, splits, air, law, names, {n: float(v) for n, v in fixed.items()},
                   ups.pop())  # fmt: skip
@@ -351,6 +357,8 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
         standard_error={n: float(se_all[j]) for j, n in enumerate(prob.free)},
         interval_low=low, interval_high=high, one_sided=one, covariance=cov[:k, :k],
         confidence=confidence, sigma=float(np.sqrt(s2)), sigma_given=sigma is not None,
-        chi2=chi / s2, dof=dof, shots=tuple(shots), ball=ball_, air_density=air_density,
+        chi2=chi / s2, dof=dof, shots=tuple(shots),
+        ball=ball_.replace(lift_slope=values["lift_slope"]) if "lift_slope" in values else ball_,
+        air_density=air_density,
         gravity=gravity,
     )  # fmt: skip

@@ -135,6 +135,9 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
     missing = [n for n in names if n not in values]
     if missing:
         raise ValueError(f"shared values missing: {', '.join(missing)}")
+    if "lift_slope" in values:  # the ball's lift slope, fitted or given: flown throughout
+        names += ("lift_slope",)
+        ball_ = ball_.replace(lift_slope=float(values["lift_slope"]))
     incoming = track if until is None else track.select(track.time < until)
     arc = fit_arc(incoming, ball_, sigma=sigma, air_density=density, gravity=g)
     air = Air(ball_, density, g)
