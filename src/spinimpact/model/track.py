@@ -32,6 +32,9 @@ __all__ = ["Track", "Air", "Bounce", "plain", "as_track", "find_bounce", "fly_to
 #: The largest integration step, s: a tenth of the shortest time scale of the air for a
 #: table-tennis ball at 10 m/s and 6000 rpm (about 0.2 s), :func:`fly_to`.
 MAX_STEP = 0.02
+#: m: a sample lower than the bounce's parabolas by more than this is an outlier, which
+#: :func:`find_bounce` passes over to the next candidate.
+OUTLIER_BELOW = 0.01
 #: Samples a flight needs: more than the 9 numbers of its state.
 MIN_SAMPLES = 6
 
@@ -267,12 +270,40 @@ def _parabola_fit(t: np.ndarray, z: np.ndarray, t0: float, g: float) -> tuple[fl
     return float(coef[0]), float(coef[1])
 
 
+def _contact(t: np.ndarray, z: np.ndarray, i: int, window: float, gravity: float,
+             max_height: float | None, where: str) -> tuple[float, float, Any]:  # fmt: skip
+    """The contact's time and height by the parabolas about candidate ``i``
+    (:func:`find_bounce`), and the path they give at any time; ``ValueError`` beginning with
+    ``where`` if it is not a bounce."""
+    if max_height is not None and z[i] > max_height:
+        raise ValueError(where + f"height {z[i]:.4g} m, above {max_height:g} m)")
+    pre = (t < t[i]) & (t >= t[i] - window)
+    after = np.flatnonzero(t > t[i])
+    if pre.sum() < 3 or after.size < 3:
+        raise ValueError(where + f"with {int(pre.sum())} sample(s) before it and {after.size} "
+                         "after it within the window; at least 3 each are needed)")  # fmt: skip
+    post = (t > t[i]) & (t <= t[after[0]] + window)
+    a1, b1 = _parabola_fit(t[pre], z[pre], t[i], gravity)
+    a2, b2 = _parabola_fit(t[post], z[post], t[i], gravity)
+    if not (b1 < -0.5 and b2 > 0.3):
+        raise ValueError(where + f"vertical velocity {b1:.3g} m/s before and {b2:.3g} m/s after "
+                         "it: not a bounce)")  # fmt: skip
+    s = (a1 - a2) / (b2 - b1)  # the parabolas share their curvature: one crossing
+
+    def path(u: np.ndarray) -> np.ndarray:
+        d = u - t[i]
+        return np.where(d < s, a1 + b1 * d, a2 + b2 * d) - 0.5 * gravity * d * d
+
+    return float(t[i] + s), float(a1 + b1 * s - 0.5 * gravity * s * s), path
+
+
 def find_bounce(track: Track, *, window: float = 0.035, gravity: float = GRAVITY,
                 max_height: float | None = None) -> Bounce:  # fmt: skip
     """Find the contact with a level surface in a track, from its positions alone.
 
-    The lowest sample ``i`` within two of the lowest point of the running median of five
-    heights (so that an isolated outlier is not taken for the table) is the candidate;
+    The samples within two of the lowest point of the running median of five heights (so
+    that an isolated outlier far from the table is not taken for it) are the candidates,
+    lowest first, until one passes:
     parabolas of curvature ``g`` are fitted to the heights within ``window`` before it and
     after it (``i`` itself in neither; each refitted once without the samples more than 5 mm
     off), and must show the ball coming down (``v < -0.5`` m/s) and going up (``v > 0.3``
@@ -296,33 +327,31 @@ def find_bounce(track: Track, *, window: float = 0.035, gravity: float = GRAVITY
     ------
     ValueError
         No bounce in the track (it ends before or at the surface, or does not turn upwards),
-        naming the track and the lowest sample's row.
+        naming the track and the lowest candidate's row.
     """
     rot = frame_rotation(track.up)
     z = track.position @ rot[1]
     t = track.time
     padded = np.pad(z, 2, mode="edge")
     smooth = np.median(np.lib.stride_tricks.sliding_window_view(padded, 5), axis=1)
-    near = int(np.argmin(smooth))  # then the lowest sample next to it
+    near = int(np.argmin(smooth))  # then the samples next to it, lowest first
     lo = max(near - 2, 0)
-    i = lo + int(np.argmin(z[lo : near + 3]))
-    where = f"track {track.name}: no bounce found (lowest sample at row {track.rows[i]}, "
-    if max_height is not None and z[i] > max_height:
-        raise ValueError(where + f"height {z[i]:.4g} m, above {max_height:g} m)")
-    pre = (t < t[i]) & (t >= t[i] - window)
-    after = np.flatnonzero(t > t[i])
-    if pre.sum() < 3 or after.size < 3:
-        raise ValueError(where + f"with {int(pre.sum())} sample(s) before it and {after.size} "
-                         "after it within the window; at least 3 each are needed)")  # fmt: skip
-    post = (t > t[i]) & (t <= t[after[0]] + window)
-    a1, b1 = _parabola_fit(t[pre], z[pre], t[i], gravity)
-    a2, b2 = _parabola_fit(t[post], z[post], t[i], gravity)
-    if not (b1 < -0.5 and b2 > 0.3):
-        raise ValueError(where + f"vertical velocity {b1:.3g} m/s before and {b2:.3g} m/s after "
-                         "it: not a bounce)")  # fmt: skip
-    s = (a1 - a2) / (b2 - b1)  # the parabolas share their curvature: one crossing
-    tc = t[i] + s
-    height = a1 + b1 * s - 0.5 * gravity * s * s
+    order = lo + np.argsort(z[lo : near + 3], kind="stable")
+    error = None
+    for k, i in enumerate(order):
+        try:
+            tc, height, path = _contact(t, z, int(i), window, gravity, max_height,
+                                        f"track {track.name}: no bounce found (lowest sample at "
+                                        f"row {track.rows[i]}, ")  # fmt: skip
+        except ValueError as exc:
+            error = error or exc
+            continue
+        lower = order[:k]  # rejected, lower candidates: accepted only as outliers below the path
+        if np.all(path(t[lower]) - z[lower] > OUTLIER_BELOW):
+            break
+        raise error
+    else:
+        raise error
     return Bounce(index=int(np.searchsorted(t, tc, side="right")), time=float(tc),
                   height=float(height))  # fmt: skip
 
