@@ -157,6 +157,7 @@ TERMS: dict[str, Term] = {
     "up": Term("The track file's vertical axis"),
     "sigma": Term("Noise of each measured coordinate", "m"),
     "predict": Term("Predict each track's bounce and outgoing flight from its incoming samples"),
+    "free-lift": Term("Fit the ball's lift slope too (shared by every track)"),
     # outputs
     "output": Term("Output file"),
     "output-dir": Term("Output directory (created if missing)"),

@@ -46,7 +46,9 @@ def _vec(v: np.ndarray, unit: str, digits: int = 3) -> str:
 @click.option("--tangential", type=click.Choice(LAWS), default="walton", show_default=True,
               help=_help("tangential", "The bounce law fitted."))  # fmt: skip
 @click.option("--fix", multiple=True, metavar="NAME=VALUE",
-              help=_help("fix", "mu, kappa, contact_height (m) or beta0; repeatable."))  # fmt: skip
+              help=_help("fix", "mu, kappa, contact_height (m), beta0 or lift_slope; "
+                         "repeatable."))  # fmt: skip
+@click.option("--free-lift", is_flag=True, help=_help("free-lift"))
 @click.option("--up", type=click.Choice(["z", "y"]), default="z", show_default=True,
               help=_help("up"))  # fmt: skip
 @click.option("--sigma", type=float, default=None,
@@ -97,6 +99,7 @@ def track_command(**o: Any) -> None:
     if splits:
         fit = fit_bounces([tracks[i] for i in splits], o["ball"], o["surface"],
                           law=o["tangential"], fixed=fixed, sigma=o["sigma"],
+                          free_lift=o["free_lift"],
                           confidence=o["confidence"])  # fmt: skip
         out["bounce_fit"] = fit.to_dict()
         echo(fit.summary())
