@@ -245,10 +245,10 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
     >>> bool(np.all(np.abs(f.velocity - [5, 0, 2]) < 3 * f.standard_error[3:6]))
     True
     """
-    from scipy.optimize import least_squares
-
     if not isinstance(track, Track):
         raise TypeError(f"track must be a Track (spinimpact.model.track.as_track), got {track!r}")
+    from scipy.optimize import least_squares
+
     ball_ = as_ball(ball)
     if len(track) < MIN_SAMPLES:
         raise ValueError(f"track {track.name}: {len(track)} sample(s); a flight needs at least "
