@@ -13,6 +13,7 @@ are built on it. Every ball of a call is flown in one batch: the loops run over 
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -22,7 +23,7 @@ from ..core.flight import integrate_to_ground, rk4_step
 from ..core.ground import GroundBounce, ground_bounce
 from .track import MAX_STEP, Air, fly_to, frame_rotation
 
-__all__ = ["flights", "to_surface", "LAWS", "BOUNDS", "CONTACT"]
+__all__ = ["flights", "to_surface", "AtContact", "LAWS", "BOUNDS", "CONTACT"]
 
 LAWS = ("rigid", "walton")
 #: Each shared parameter's range.
@@ -38,6 +39,20 @@ SHARED_SCALE = {"mu": 0.05, "kappa": 0.05, "beta0": 0.1, "contact_height": 1e-3,
 
 #: What :func:`flights` gives at each contact, besides its time.
 CONTACT = ("contact_position", "velocity_before", "spin_before", "velocity_after", "spin_after")
+
+
+@dataclass(frozen=True, eq=False)
+class AtContact:
+    """The ball at its contact with the surface (tracks' frame), as a fitted shot
+    (:class:`~spinimpact.model.track_fit.Shot`) and a prediction
+    (:class:`~spinimpact.model.track_predict.Prediction`) give it."""
+
+    contact_time: float  #: s
+    contact_position: np.ndarray  #: centre, m
+    velocity_before: np.ndarray  #: m/s
+    spin_before: np.ndarray  #: rad/s
+    velocity_after: np.ndarray  #: m/s
+    spin_after: np.ndarray  #: rad/s
 
 
 def _rebound(law: str, beta0: np.ndarray | None) -> Any:

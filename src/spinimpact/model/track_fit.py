@@ -30,14 +30,14 @@ from .presets import ball as as_ball
 from .presets import ground as as_ground
 from .track import Air, Bounce, Track, find_bounce, plain
 from .track_arc import OUTLIER_SIGMAS, ArcFit, covariance, fit_arc, identify
-from .track_bounce import BOUNDS, CONTACT, LAWS, flights, padded
+from .track_bounce import BOUNDS, CONTACT, LAWS, AtContact, flights, padded
 from .track_joint import Joint, profile
 
 __all__ = ["BounceFit", "Shot", "fit_bounces", "MIN_CHECK"]
 
 
 @dataclass(frozen=True, eq=False)
-class Shot:
+class Shot(AtContact):
     """One track of a bounce fit: its split, its fitted flights and their check.
 
     Attributes
@@ -71,12 +71,6 @@ class Shot:
     state: np.ndarray
     standard_error: np.ndarray
     split: int
-    contact_time: float
-    contact_position: np.ndarray
-    velocity_before: np.ndarray
-    spin_before: np.ndarray
-    velocity_after: np.ndarray
-    spin_after: np.ndarray
     spin_components_before: dict
     outgoing_check: ArcFit | None
     fitted: np.ndarray

@@ -20,14 +20,14 @@ from .presets import Ball
 from .presets import ball as as_ball
 from .track import Air, Track, plain
 from .track_arc import ArcFit, fit_arc
-from .track_bounce import CONTACT, SHARED_STEP, STEP, flights
+from .track_bounce import CONTACT, SHARED_STEP, STEP, AtContact, flights
 from .track_fit import BounceFit
 
 __all__ = ["Prediction", "predict_bounce"]
 
 
 @dataclass(frozen=True, eq=False)
-class Prediction:
+class Prediction(AtContact):
     """A bounce and the outgoing flight predicted from an incoming track
     (:func:`predict_bounce`); track's frame.
 
@@ -60,12 +60,6 @@ class Prediction:
     standard_error: np.ndarray
     low: np.ndarray
     high: np.ndarray
-    contact_time: float
-    contact_position: np.ndarray
-    velocity_before: np.ndarray
-    spin_before: np.ndarray
-    velocity_after: np.ndarray
-    spin_after: np.ndarray
     contact_standard_error: dict
     confidence: float
 
