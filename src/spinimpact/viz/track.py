@@ -122,8 +122,8 @@ def plot_prediction(pred: Prediction, track: Track | None = None) -> Figure:
     side, band = fig.subplots(1, 2)
     side.plot(inc.position @ along, inc.position @ up, ".", ms=3, color="0.35",
               label="incoming samples (used)")  # fmt: skip
-    if track is not None:
-        later = track.time > inc.time[-1]
+    later = np.zeros(0, dtype=bool) if track is None else track.time > inc.time[-1]
+    if later.any():
         side.plot(track.position[later] @ along, track.position[later] @ up, "o", ms=3,
                   mfc="none", color="tab:green", label="later samples (not used)")  # fmt: skip
         band.plot(track.time[later], track.position[later] @ up, "o", ms=3, mfc="none",
