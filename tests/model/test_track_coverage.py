@@ -5,17 +5,21 @@ table-tennis ball with 1.5 mm of noise in each coordinate, two outliers 2-5 cm o
 and two samples dropped a shot, sampled at about 180 Hz with uneven steps. The nominal 95 %
 intervals must cover the truth at about the nominal rate:
 
-* :func:`fit_arc` on the incoming 0.45 s of a flight (100 data sets): the velocity's three
-  components and the spin's topspin and sidespin components, each ``estimate -+ 1.96``
-  standard errors; 88-100 % required (three binomial standard errors, 2.2 % at 100 sets,
-  below 95 %);
-* :func:`fit_bounces` of two shots of 0.35 s that slide throughout their bounces (rigid law;
-  40 data sets): the profile-likelihood intervals of ``mu``, ``kappa`` and
-  ``contact_height``, and the Wald intervals of each shot's spin before the bounce (topspin,
-  sidespin); 85-100 % required (a binomial standard error is 3.4 % at 40 sets).
+* :func:`fit_arc` on the incoming 0.45 s of a flight: the velocity's three components and
+  the spin's topspin and sidespin components, each ``estimate -+ 1.96`` standard errors;
+* :func:`fit_bounces` of two shots of 0.35 s that slide throughout their bounces (rigid law):
+  the profile-likelihood intervals of ``mu``, ``kappa`` and ``contact_height``, and the Wald
+  intervals of each shot's spin before the bounce (topspin, sidespin).
+
+Each rate must be at least 95 % less three binomial standard errors at the number of data
+sets. ``make test`` runs 30 flights and 10 bounce data sets (a few minutes);
+``SPINIMPACT_TRACK_SETS=full`` runs 100 and 40 (about 6 and 10 minutes on two cores): there
+the measured rates were 96-98 % (flight) and 92.5-97.5 % (bounce).
 """
 
 from __future__ import annotations
+
+import os
 
 import numpy as np
 import pytest
@@ -30,6 +34,14 @@ from .track_cases import CONTACT_HEIGHT, shot
 pytestmark = pytest.mark.slow
 
 Z95 = 1.959964
+#: Data sets of the two tests: (flights, bounce sets).
+FULL = os.environ.get("SPINIMPACT_TRACK_SETS", "") == "full"
+N_ARC, N_BOUNCE = (100, 40) if FULL else (30, 10)
+
+
+def _required(n_sets: int) -> float:
+    """95 % less three binomial standard errors at ``n_sets``."""
+    return 0.95 - 3.0 * (0.95 * 0.05 / n_sets) ** 0.5
 
 
 def _covered(estimate, se, truth) -> bool:
@@ -38,7 +50,7 @@ def _covered(estimate, se, truth) -> bool:
 
 def test_arc_intervals_cover_the_truth_at_the_nominal_rate():
     rng = np.random.default_rng(2031)
-    n_sets = 100
+    n_sets = N_ARC
     hits = np.zeros(5)
     for _ in range(n_sets):
         track, truth = shot(rng, before=0.45, after=0.05)
@@ -53,13 +65,13 @@ def test_arc_intervals_cover_the_truth_at_the_nominal_rate():
             hits[3 + k] += _covered(value, err, float(axes[k] @ truth["spin"]))
     rate = hits / n_sets
     print("arc coverage (vx, vy, vz, topspin, sidespin):", rate)
-    assert np.all(rate >= 0.88), rate
+    assert np.all(rate >= _required(n_sets)), rate
 
 
 @pytest.mark.timeout(3600)  # 40 joint fits with profile intervals: about 10 minutes
 def test_bounce_intervals_cover_the_truth_at_the_nominal_rate():
     rng = np.random.default_rng(2032)
-    n_sets = 40
+    n_sets = N_BOUNCE
     truth_shared = {"mu": 0.2, "kappa": 0.88, "contact_height": CONTACT_HEIGHT}
     hits = {**{k: 0 for k in truth_shared}, "topspin": 0, "sidespin": 0}
     n_spin = 0
@@ -77,4 +89,4 @@ def test_bounce_intervals_cover_the_truth_at_the_nominal_rate():
             n_spin += 1
     rates = {k: v / (n_spin if k in ("topspin", "sidespin") else n_sets) for k, v in hits.items()}
     print("bounce coverage:", rates)
-    assert all(r >= 0.85 for r in rates.values()), rates
+    assert all(r >= _required(n_sets) for r in rates.values()), rates
