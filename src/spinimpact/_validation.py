@@ -349,7 +349,8 @@ def require(module: str, purpose: str) -> ModuleType:
     ------
     ImportError
         If the package is missing; the message names ``pip install
-        'spinimpact[EXTRA]'``.
+        'spinimpact[EXTRA]'``. A package that is installed but fails to load (a compiled
+        library that cannot be mapped for want of memory) raises its own error.
     """
     top = module.split(".")[0]
     if top not in EXTRAS:
@@ -358,6 +359,8 @@ def require(module: str, purpose: str) -> ModuleType:
     try:
         return importlib.import_module(module)
     except ImportError as err:
+        if not isinstance(err, ModuleNotFoundError):
+            raise  # installed but failed to load (e.g. no address space left to map it)
         raise ImportError(
             f"{purpose} needs {dist}, which is not installed: pip install 'spinimpact[{extra}]'",
             name=top,

@@ -134,3 +134,16 @@ def test_light_commands_import_neither_matplotlib_nor_rich(args):
 def test_simulate_plot_suffix_names_the_plot_option(capsys, tmp_path):
     status, out, err = run_main(capsys, "simulate", "--plot", str(tmp_path / "x.xyz"))
     assert_one_line(status, out, err, "--plot must end in .png, .svg or .pdf")
+
+
+def test_an_extra_that_is_installed_but_fails_to_load_is_not_called_missing(monkeypatch):
+    # Under ulimit -v a compiled library can fail to map: that is not "not installed".
+    import importlib
+
+    def fail(name, *args, **kwargs):
+        raise ImportError("libarrow.so: failed to map segment from shared object")
+
+    monkeypatch.setattr(importlib, "import_module", fail)
+    with pytest.raises(ImportError, match="failed to map segment") as caught:
+        require("pyarrow", "Parquet files")
+    assert "not installed" not in str(caught.value)

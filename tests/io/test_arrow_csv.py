@@ -218,3 +218,16 @@ def test_a_column_with_blanks_or_empty_cells_is_stripped_then_read(cells):
         None if np.isnan(v) else v for v in values.tolist()
     ]
     assert rest.tolist() == [i for i, c in enumerate(stripped) if c and not plain[i]]
+
+
+def test_under_an_address_limit_the_python_reader_reads_the_file(tmp_path, monkeypatch):
+    # pyarrow's CSV reader, when an allocation fails in its read-ahead thread, waits for
+    # that thread forever: under ulimit -v a chunk too large for the limit hung the run.
+    path = tmp_path / "in.csv"
+    path.write_text("vx,vy,omega\n1,-1,0\n2,-1,3\n")
+    got = _arrow(path, 2, False)
+    assert all(isinstance(c.columns, _arrow_csv._Cells) for c in got[1:])
+    monkeypatch.setattr(_arrow_csv, "address_limit", lambda: 600 * 2**20)
+    limited = _arrow(path, 2, False)
+    assert not any(isinstance(c.columns, _arrow_csv._Cells) for c in limited[1:])
+    assert_same_chunks(limited, _python(path, 2, False))

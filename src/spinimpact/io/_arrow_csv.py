@@ -18,7 +18,11 @@ rounded, as Python's ``float`` is) instead of one Python object per cell:
   lines) hands the rest of the file, from the first row not yet yielded, to the Python
   reader, which then reports or keeps it as it always has.
 
-Standard input (``-``), or no pyarrow, is read by the Python reader throughout.
+Standard input (``-``), or no pyarrow, is read by the Python reader throughout, and so is
+any file under an address-space limit (``ulimit -v``): when an allocation fails in the
+Arrow reader's read-ahead thread, ``pyarrow.csv.open_csv`` (pyarrow 26) waits forever for
+that thread, which waits for itself, so a chunk too large for the limit hung the run
+instead of stopping it with one line naming ``--chunk-size``.
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from .._limits import address_limit
 from .._validation import available
 from . import _tables
 from ._tables import Chunk
@@ -60,7 +65,7 @@ def csv_chunks(
 
     Same parameters, results and errors; ``advance`` gets the bytes read so far.
     """
-    if str(path) == "-" or not available("pyarrow"):
+    if str(path) == "-" or not available("pyarrow") or address_limit() is not None:
         yield from _tables.csv_chunks(path, chunk_size, skip, advance)
         return
     header, simple = _header(path)
