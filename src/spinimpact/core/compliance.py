@@ -53,11 +53,14 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple
 
+from . import scalar_tangential as _tangential
 from ._xp import arrays, quiet
+from .scalar_tangential import impulse_to_body, tangential_impulse_of
 from .stronge import StrongeRebound, stronge_restitution
 
 __all__ = [
     "MawAngles",
+    "impulse_to_body",
     "StrongeRebound",
     "maw_angles",
     "mindlin_stiffness_ratio",
@@ -99,7 +102,7 @@ def sliding_restitution(slip, vy, zeta, mu, kappa):
         :math:`-1 + (1+\kappa)\zeta\mu|c_n^-|/|c_t^-|` (``+inf`` where ``c_t^- = 0``).
     """
     xp, (slip, vy) = arrays(slip, vy)
-    num = (1.0 + kappa) * zeta * mu * xp.abs(vy)
+    num = _tangential.sliding_change(vy, zeta, mu, kappa)
     den = xp.abs(slip)
     with quiet(xp, divide="ignore", invalid="ignore"):
         ratio = xp.where(den > 0, num / xp.where(den > 0, den, 1.0), xp.inf)
@@ -157,8 +160,9 @@ def walton_slip(slip, vy, zeta, mu, kappa, beta0):
         :func:`~spinimpact.core.impulse.sticks` for ``beta_0 = 0``).
     """
     xp, (slip, vy, beta0) = arrays(slip, vy, beta0)
-    stuck = (1.0 + beta0) * xp.abs(slip) <= (1.0 + kappa) * zeta * mu * xp.abs(vy)
-    slide = slip - xp.sign(slip) * (1.0 + kappa) * zeta * mu * xp.abs(vy)
+    change = _tangential.sliding_change(vy, zeta, mu, kappa)  # the formulas of the law on
+    stuck = _tangential.walton_sticks(slip, beta0, change)  # floats (walton_contact)
+    slide = _tangential.slid(slip, xp.sign(slip), change)
     return xp.where(stuck, -beta0 * slip, slide) + 0.0, stuck
 
 
@@ -196,12 +200,6 @@ def slip_after_restitution(slip, beta):
     ``0`` where ``c_t^- = 0`` (whatever ``beta``, NaN included)."""
     xp, (slip, beta) = arrays(slip, beta)
     return xp.where(slip == 0, 0.0, -beta * slip) + 0.0
-
-
-def tangential_impulse_of(mass, zeta, slip, slip_after):
-    """Friction impulse that changes the slip from ``c_t^-`` to ``c_t^+``, N s:
-    ``f_1 = (c_t^+ - c_t^-)/W_tt = m (c_t^+ - c_t^-)/zeta`` (``dc_t = W_tt df``)."""
-    return mass * (slip_after - slip) / zeta
 
 
 def mindlin_stiffness_ratio(poisson_ratio):

@@ -41,6 +41,17 @@ Spheres in 3D (:mod:`spinimpact.core.scalar3d`): ``sphere_rebound``, ``sphere_re
 ``sphere_dissipated_energy``, ``sphere_contact``, and two spheres, ``pair_rebound``,
 ``pair_parameters``.
 
+Whether there is an impact at all: ``approaching(vy)`` (``c_n < 0``; the paper's bodies
+and any contact of the seam), ``sphere_approaching``, ``pair_approaching``.
+
+Tangential compliance laws (:mod:`spinimpact.core.scalar_tangential`,
+:mod:`spinimpact.core.scalar_stronge`; ``solve(..., tangential=Walton(beta0))`` and
+``Stronge(...)``): ``walton_rebound`` and ``stronge_rebound`` (the paper's bodies, arguments
+of ``rebound`` then ``beta0`` or ``stiffness_ratio``; ``vx+, vy+, omega+, f1``),
+``sphere_walton_rebound`` and ``sphere_stronge_rebound`` (a sphere in 3D, arguments of
+``sphere_rebound`` then the law's parameter), ``walton_contact`` (``slip_after, stuck``) and
+``stronge_contact`` (``slip_after, stuck, transitions``) on the seam.
+
 Planar bodies touching off their centre (:mod:`spinimpact.core.scalar_planar`, the coupled
 collision matrix): ``planar_rebound`` (a free body), ``planar_process`` (any ``W``: a
 pendulum's too), ``planar_state_at``, ``planar_work``, ``planar_min_energy_impulse``.
@@ -48,12 +59,29 @@ pendulum's too), ``planar_state_at``, ``planar_work``, ``planar_min_energy_impul
 
 from __future__ import annotations
 
-from . import scalar, scalar3d, scalar_planar
+from . import impulse, kinematics, scalar, scalar3d, scalar_planar, scalar_stronge
+from . import scalar_tangential as tangential
 from .scalar import *  # noqa: F403 - the law's public names
 from .scalar3d import *  # noqa: F403
 from .scalar_planar import *  # noqa: F403
+from .scalar_tangential import *  # noqa: F403
 
-__all__ = ["HAVE_NUMBA", *scalar.__all__, *scalar3d.__all__, *scalar_planar.__all__]
+__all__ = [
+    "HAVE_NUMBA",
+    *scalar.__all__,
+    *scalar3d.__all__,
+    *scalar_planar.__all__,
+    *tangential.__all__,
+]
+
+#: Functions of the array modules written for floats and arrays alike (operators only), which
+#: the law on floats calls: the formula is written once, for both.
+_SHARED = (
+    impulse.compression_impulse,
+    impulse.total_impulse,
+    impulse.rebound_normal_velocity,
+    kinematics.slip_velocity,
+)
 
 try:  # pragma: no cover - depends on the optional extra
     from numba.extending import register_jitable
@@ -73,5 +101,8 @@ def _functions(module):
 
 
 if HAVE_NUMBA:  # pragma: no branch
-    for _f in _functions(scalar) + _functions(scalar3d) + _functions(scalar_planar):
+    for _m in (scalar, scalar3d, scalar_planar, scalar_stronge, tangential):
+        for _f in _functions(_m):
+            register_jitable(_f)
+    for _f in _SHARED:
         register_jitable(_f)  # registers the function object itself; returns it unchanged

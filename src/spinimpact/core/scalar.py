@@ -47,6 +47,7 @@ __all__ = [
     "dissipated_energy",
     "kinetic_energy",
     "outcome_flags",
+    "approaching",
 ]
 
 #: Relative tolerance of the outcome flags' equalities (:mod:`spinimpact.core.outcomes`).
@@ -352,3 +353,30 @@ def outcome_flags(vx, vy, omega, radius, zeta, mu, kappa):
     backward = a != 0.0 and not zero_x and sign(gx) == -sign(a)
     reversed_spin = b != 0.0 and not zero_w and sign(gw) == -sign(b)
     return backward, reversed_spin, zero_x, not zero_w, stick
+
+
+def approaching(vy):
+    """Whether the contact point approaches the surface: ``c_n^- < 0`` (the paper's
+    ``v^- < 0``, section 3), the condition for an impact to happen at all.
+
+    Parameters
+    ----------
+    vy : float
+        Normal velocity of the contact point, m/s: for the paper's bodies the centre's ``vy``
+        (the contact point moves normally with the centre, ``W_tn = 0``); for any contact of
+        the seam, its ``c_n``.
+
+    Returns
+    -------
+    bool
+        ``True`` for ``vy < 0``; ``False`` for a contact at rest or separating (and NaN),
+        which no law here may be given: :func:`rebound` of ``vy = +2`` would return a
+        meaningless ``vy+ < 0``. (:func:`spinimpact.solve` also refuses an approach slower
+        than ``1e-50`` m/s as grazing.)
+
+    Examples
+    --------
+    >>> approaching(-3.0), approaching(2.0), approaching(0.0)
+    (True, False, False)
+    """
+    return vy < 0.0

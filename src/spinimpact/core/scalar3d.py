@@ -31,6 +31,8 @@ __all__ = [
     "sphere_rebound",
     "sphere_regime",
     "sphere_dissipated_energy",
+    "sphere_approaching",
+    "pair_approaching",
     "pair_parameters",
     "pair_rebound",
     "sphere_impact_fields",
@@ -73,9 +75,8 @@ def sphere_contact(velocity, spin, normal, radius, surface_velocity):
     return cn, ct, speed, e
 
 
-def _impulse(cn, speed, e, normal, mass, zeta, mu, kappa):
+def _impulse(tau1, f1, e, normal):
     """Friction impulse vector ``F = f_1 e_t`` and the whole impulse ``P = tau_1 n + F``."""
-    tau1, f1 = contact_impulses(speed, cn, mass, zeta, mu, kappa)[2:]
     friction = (f1 * e[0], f1 * e[1], f1 * e[2])
     total = (
         tau1 * normal[0] + friction[0],
@@ -111,7 +112,14 @@ def sphere_rebound(velocity, spin, normal, surface_velocity, mass, radius, inert
     (0.714285714286, 2.4000000000000004)
     """
     cn, _, speed, e = sphere_contact(velocity, spin, normal, radius, surface_velocity)
-    friction, total = _impulse(cn, speed, e, normal, mass, zeta, mu, kappa)
+    tau1, f1 = contact_impulses(speed, cn, mass, zeta, mu, kappa)[2:]
+    return _sphere_after(velocity, spin, normal, mass, radius, inertia, tau1, f1, e)
+
+
+def _sphere_after(velocity, spin, normal, mass, radius, inertia, tau1, f1, e):
+    """A sphere's ``(v+, w+)`` (six floats) after the normal impulse ``tau_1`` and the
+    friction impulse ``f_1`` along the slip direction ``e``."""
+    friction, total = _impulse(tau1, f1, e, normal)
     w1 = _spin_change(spin, normal, radius, inertia, friction)
     return (
         velocity[0] + total[0] / mass,
@@ -121,6 +129,31 @@ def sphere_rebound(velocity, spin, normal, surface_velocity, mass, radius, inert
         w1[1],
         w1[2],
     )
+
+
+def sphere_approaching(velocity, spin, normal, surface_velocity, radius):
+    """Whether a sphere's contact point approaches the surface: ``c_n < 0``, with ``c_n`` of
+    :func:`sphere_contact` (the number :func:`spinimpact.solve_sphere` checks).
+
+    Parameters
+    ----------
+    velocity, spin, normal, surface_velocity : 3-tuples of float
+        As :func:`sphere_rebound`.
+    radius : float
+        m.
+
+    Returns
+    -------
+    bool
+        ``False`` for a contact at rest or separating (and for NaN): no impact to solve.
+
+    Examples
+    --------
+    >>> sphere_approaching((1.0, -2.0, 0.0), (0.0, 0.0, 5.0), (0.0, 1.0, 0.0),
+    ...                    (0.0, 0.0, 0.0), 0.1)
+    True
+    """
+    return sphere_contact(velocity, spin, normal, radius, surface_velocity)[0] < 0.0
 
 
 def sphere_regime(velocity, spin, normal, surface_velocity, radius, zeta, mu, kappa):
@@ -145,6 +178,40 @@ def pair_parameters(mass1, inertia1, radius1, mass2, inertia2, radius2):
     return 1.0 / w_nn, w_tt / w_nn
 
 
+def _pair_contact(velocity1, spin1, velocity2, spin2, normal, radius1, radius2):
+    """:func:`sphere_contact` of sphere 1 against sphere 2's material at the contact."""
+    r2n = (radius2 * normal[0], radius2 * normal[1], radius2 * normal[2])
+    w2r = _cross(spin2, r2n)
+    other = (velocity2[0] + w2r[0], velocity2[1] + w2r[1], velocity2[2] + w2r[2])
+    return sphere_contact(velocity1, spin1, normal, radius1, other)
+
+
+def pair_approaching(velocity1, spin1, velocity2, spin2, normal, radius1, radius2):
+    """Whether two spheres' contact points approach each other: ``c_n < 0`` along
+    ``normal`` (from sphere 2's centre to sphere 1's), the number
+    :func:`spinimpact.solve_pair` checks.
+
+    Parameters
+    ----------
+    velocity1, spin1, velocity2, spin2, normal : 3-tuples of float
+        As :func:`pair_rebound` (m/s, rad/s; ``normal`` of unit length).
+    radius1, radius2 : float
+        m.
+
+    Returns
+    -------
+    bool
+        ``False`` for contacts at rest relative to each other, separating, or NaN.
+
+    Examples
+    --------
+    >>> pair_approaching((0.0, 0.0, -1.0), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0),
+    ...                  (0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.03, 0.03)
+    True
+    """
+    return _pair_contact(velocity1, spin1, velocity2, spin2, normal, radius1, radius2)[0] < 0.0
+
+
 def pair_rebound(velocity1, spin1, velocity2, spin2, normal, mass1, radius1, inertia1,
                  mass2, radius2, inertia2, mu, kappa):  # fmt: skip
     """Rebound of two spheres; ``normal`` points from sphere 2's centre to sphere 1's.
@@ -155,12 +222,10 @@ def pair_rebound(velocity1, spin1, velocity2, spin2, normal, mass1, radius1, ine
         ``(v1+ (3), w1+ (3), v2+ (3), w2+ (3))`` flattened: twelve floats, as
         :func:`spinimpact.solve_pair`'s ``after1`` and ``after2``.
     """
-    r2n = (radius2 * normal[0], radius2 * normal[1], radius2 * normal[2])
-    w2r = _cross(spin2, r2n)
-    other = (velocity2[0] + w2r[0], velocity2[1] + w2r[1], velocity2[2] + w2r[2])
-    cn, _, speed, e = sphere_contact(velocity1, spin1, normal, radius1, other)
+    cn, _, speed, e = _pair_contact(velocity1, spin1, velocity2, spin2, normal, radius1, radius2)
     m, zeta = pair_parameters(mass1, inertia1, radius1, mass2, inertia2, radius2)
-    friction, total = _impulse(cn, speed, e, normal, m, zeta, mu, kappa)
+    tau1, f1 = contact_impulses(speed, cn, m, zeta, mu, kappa)[2:]
+    friction, total = _impulse(tau1, f1, e, normal)
     a = _spin_change(spin1, normal, radius1, inertia1, friction)
     b = _spin_change(spin2, normal, radius2, inertia2, friction)
     return (

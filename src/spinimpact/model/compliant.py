@@ -139,8 +139,7 @@ def solve_compliant(law: Any, body: Body, vx: Any, vy: Any, omega: Any, *, mu: A
     slip = core.slip_velocity(vx_, om_, r)
     slip1, stuck = law.rebound_slip(slip, vy_, zeta, mu_, kappa_)
     f1 = laws.tangential_impulse_of(m, zeta, slip, slip1)
-    vx1 = vx_ + f1 / m
-    om1 = om_ + (zeta - 1.0) * f1 / (m * r)
+    vx1, om1 = laws.impulse_to_body(vx_, om_, m, r, zeta, f1)
     vy1 = core.rebound_normal_velocity(vy_, kappa_)
     tau0 = core.compression_impulse(m, vy_)
     tau1 = core.total_impulse(m, vy_, kappa_)
