@@ -6,7 +6,8 @@ Every figure is a ratio against a baseline measured in the same run on the
 same machine: the memory-copy bound for the fused kernel, and the fused
 kernel's time per impact for everything else; at the end, ``solve()`` with every field
 against copies of its bytes and ``spinimpact batch`` against Arrow's reading and writing
-(:mod:`benchmarks.limits`).
+(:mod:`benchmarks.limits`), and every solver's call on one impact against the closed form
+of that impact in plain Python (:mod:`benchmarks.scalar_calls`).
 """
 
 from __future__ import annotations
@@ -375,6 +376,9 @@ def main() -> None:
     from benchmarks.one_impact import report as one_impact  # one impact; the compiled law
 
     one_impact(console)
+    from benchmarks.scalar_calls import report as scalar_calls  # every solver on one impact
+
+    scalar_calls(console)
     if fused.HAVE_NUMBA:
         from benchmarks.dem_cost import report as dem_cost  # the DEM force in an njit loop
 

@@ -105,6 +105,11 @@ def planar_state_at(tau, slip, vn, a, b, d, mu, tau_slip):
     """``(f, u, v, F/N)`` at normal impulse ``tau``, as
     :func:`spinimpact.core.planar.planar_state_at`."""
     s1, k1, r1, _, _, s2, k2, r2 = planar_phases(slip, a, b, d, mu)
+    return _state(tau, slip, vn, tau_slip, s1, k1, r1, s2, k2, r2)
+
+
+def _state(tau, slip, vn, tau_slip, s1, k1, r1, s2, k2, r2):
+    """:func:`planar_state_at` given the phases' force ratios and rates."""
     ts = tau_slip if tau_slip != math.inf else 0.0
     before = tau < tau_slip
     late = 0.0 if before else tau - ts
@@ -187,6 +192,7 @@ def planar_process(slip, vn, a, b, d, mu, kappa, law):
 def planar_work(lo, hi, slip, vn, a, b, d, mu, tau_slip):
     """Works ``(W^n, W^t)`` of the normal and friction impulses over ``[lo, hi]``, J, as
     :func:`spinimpact.core.planar.planar_work` (the trapezoid rule on each piece)."""
+    s1, k1, r1, _, _, s2, k2, r2 = planar_phases(slip, a, b, d, mu)  # once for every state
     finite = tau_slip != math.inf
     ts = tau_slip if finite else 0.0
     cut = ts if finite else _maximum(hi, lo)
@@ -200,9 +206,9 @@ def planar_work(lo, hi, slip, vn, a, b, d, mu, tau_slip):
         x1 = _maximum(x0, x1)
         probe = (x0 + x1) / 2.0
         side = probe < tau_slip if k == 0 else probe >= tau_slip
-        _, u_a, v_a, _ = planar_state_at(x0, slip, vn, a, b, d, mu, tau_slip)
-        _, u_b, v_b, _ = planar_state_at(x1, slip, vn, a, b, d, mu, tau_slip)
-        ratio = planar_state_at(probe, slip, vn, a, b, d, mu, tau_slip)[3]
+        _, u_a, v_a, _ = _state(x0, slip, vn, tau_slip, s1, k1, r1, s2, k2, r2)
+        _, u_b, v_b, _ = _state(x1, slip, vn, tau_slip, s1, k1, r1, s2, k2, r2)
+        ratio = _state(probe, slip, vn, tau_slip, s1, k1, r1, s2, k2, r2)[3]
         h = x1 - x0 if side else 0.0
         normal = normal + h * (v_a + v_b) / 2.0
         tangential = tangential + h * ratio * (u_a + u_b) / 2.0

@@ -2,30 +2,46 @@
 and :func:`~spinimpact.solve_pendulum`.
 
 As :mod:`spinimpact.model._fast` does for :func:`~spinimpact.solve`: when ``vx, vy,
-omega, mu, kappa`` are plain numbers and the body's numbers floats, :func:`planar_impact`
-computes every field with the planar law on floats (:mod:`spinimpact.core.scalar_planar`)
-and the body's own methods, in the array path's operations and order: the same
-:class:`~spinimpact.PlanarImpact` field for field, bit for bit (NaN where it is NaN;
-``tests/model/test_fast_planar.py``). Anything else, or a value the array path would refuse,
-returns ``None`` and the array path runs, raising the usual errors.
+omega, mu, kappa`` are plain numbers (or arrays of one element) and the body's numbers
+floats, :func:`planar_impact` computes every field with the planar law on floats
+(:mod:`spinimpact.core.scalar_planar`) and the body's own methods, in the array path's
+operations and order: the same :class:`~spinimpact.PlanarImpact` field for field, bit for
+bit (NaN where it is NaN; ``tests/model/test_fast_planar.py``,
+``tests/model/test_fast_paths.py``). :func:`pendulum_impact` does the same for a
+pendulum's spin. Anything else, or a value the array path would refuse, returns ``None``
+and the array path runs, raising the usual errors.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 from .._validation import SMALLEST
 from ..core import scalar_planar as law
 from ..core.planar import LAWS, PLANAR_REGIMES
-from ._fast import build, number
+from ._fast import numbers
+from ._fast_result import Layout, layout_for
 
-__all__ = ["planar_impact"]
+__all__ = ["pendulum_impact", "planar_impact"]
 
-_FLOAT = np.float64
 _REGIMES = tuple(PLANAR_REGIMES)  #: plain str, as the array path's ``freeze`` gives
 _ENERGY_RTOL = 1e-12  # as model.planar: a rise of the energy beyond rounding
+
+
+def _layout(kind: type, state: type) -> Layout:
+    motion = Layout(state, ("vx", "vy", "omega"))
+    return Layout(
+        kind,
+        ("mu", "kappa", "slip_before", "slip_after", "normal_velocity_before",
+         "normal_velocity_after", "tau0", "tau_star", "tau1", "tangential_impulse",
+         "impulse_ratio", "kinetic_energy_before", "kinetic_energy_after", "dissipated_energy",
+         "dissipated_fraction", "work_compression_normal", "work_compression_tangential",
+         "work_restitution_normal", "work_restitution_tangential", "min_kinetic_energy",
+         "tau_min_energy", "newton_restitution", "poisson_restitution",
+         "energetic_restitution"),
+        nested=(("before", motion), ("after", motion)), flags=("creates_energy",),
+        text={"regime": _REGIMES}, given=("body", "law"),
+    )  # fmt: skip
 
 
 def planar_impact(kind: type, state: type, body: Any, vx: Any, vy: Any, omega: Any, mu: Any,
@@ -42,12 +58,36 @@ def planar_impact(kind: type, state: type, body: Any, vx: Any, vy: Any, omega: A
     vx, vy, omega, mu, kappa, law_name : object
         As given to the solver (``law_name`` already checked to be one of the laws).
     """
-    if callable(kappa) or not all(type(getattr(body, n)) is float for n in body.COLUMNS):
+    for name in body.COLUMNS:
+        if type(getattr(body, name)) is not float:
+            return None
+    given = numbers((vx, vy, omega, mu, kappa), ("vx", "vx", "omega", "mu", "kappa"))
+    if given is None:
         return None
-    vx_, vy_, om_ = number(vx, "vx"), number(vy, "vx"), number(omega, "omega")
-    mu_, k = number(mu, "mu"), number(kappa, "kappa")
-    if vx_ is None or vy_ is None or om_ is None or mu_ is None or k is None:
+    (vx_, vy_, om_, mu_, k), shape = given
+    return _impact(kind, state, body, vx_, vy_, om_, mu_, k, law_name, shape)
+
+
+def pendulum_impact(kind: type, state: type, pendulum: Any, omega: Any, mu: Any, kappa: Any,
+                    law_name: Any) -> Any:  # fmt: skip
+    """:func:`planar_impact` of a :class:`~spinimpact.Pendulum` given its spin alone (the
+    centre's velocity ``(-omega gy, omega gx)`` as the pendulum computes it), or ``None``;
+    also ``None`` for a ``law_name`` that is not one of the laws (the array path says so)."""
+    if type(law_name) is not str or law_name not in LAWS:
         return None
+    for name in pendulum.COLUMNS:
+        if type(getattr(pendulum, name)) is not float:
+            return None
+    given = numbers((omega, mu, kappa), ("omega", "mu", "kappa"))
+    if given is None:
+        return None
+    (om, mu_, k), shape = given
+    vx, vy = pendulum.centre_velocity(om)
+    return _impact(kind, state, pendulum, vx, vy, om, mu_, k, law_name, shape)
+
+
+def _impact(kind: type, state: type, body: Any, vx_: float, vy_: float, om_: float,
+            mu_: float, k: float, law_name: str, shape: tuple[int, ...] | None) -> Any:  # fmt: skip
     u0, v0 = body.contact_velocity(vx_, vy_, om_)
     if not v0 <= -SMALLEST:
         return None  # the array path says why (as solve refuses |vy| < SMALLEST)
@@ -66,22 +106,13 @@ def planar_impact(kind: type, state: type, body: Any, vx: Any, vy: Any, omega: A
     f_m = law.planar_state_at(tau_m, *contact, tau_s)[0]
     at_min = body.apply_impulse(vx_, vy_, om_, f_m, tau_m)
     eta2 = law._divide(-wrn, wcn)
-    f = _FLOAT
-    return build(kind, {
-        "body": body, "law": law_name, "mu": f(mu_), "kappa": f(k),
-        "before": build(state, {"vx": f(vx_), "vy": f(vy_), "omega": f(om_)}),
-        "after": build(state, {"vx": f(vx1), "vy": f(vy1), "omega": f(om1)}),
-        "slip_before": f(u0), "slip_after": f(u1), "normal_velocity_before": f(v0),
-        "normal_velocity_after": f(vn1), "regime": _REGIMES[code], "tau0": f(tau_c),
-        "tau_star": f(tau_s), "tau1": f(tau_f), "tangential_impulse": f(f1),
-        "impulse_ratio": f(law._divide(f1, tau_f)), "kinetic_energy_before": f(e0),
-        "kinetic_energy_after": f(body.kinetic_energy(vx1, vy1, om1)),
-        "dissipated_energy": f(loss), "dissipated_fraction": f(law._divide(loss, e0)),
-        "work_compression_normal": f(wcn), "work_compression_tangential": f(wct),
-        "work_restitution_normal": f(wrn), "work_restitution_tangential": f(wrt),
-        "min_kinetic_energy": f(body.kinetic_energy(*at_min)), "tau_min_energy": f(tau_m),
-        "newton_restitution": f(-vn1 / v0),
-        "poisson_restitution": f(law._divide(tau_f - tau_c, tau_c)),
-        "energetic_restitution": f(law._sqrt(law._maximum(eta2, 0.0))),
-        "creates_energy": np.True_ if loss < -_ENERGY_RTOL * e0 else np.False_,
-    })  # fmt: skip
+    layout = layout_for(_layout, kind, state)
+    floats = (
+        mu_, k, u0, u1, v0, vn1, tau_c, tau_s, tau_f, f1, law._divide(f1, tau_f), e0,
+        body.kinetic_energy(vx1, vy1, om1), loss, law._divide(loss, e0), wcn, wct, wrn, wrt,
+        body.kinetic_energy(*at_min), tau_m, -vn1 / v0, law._divide(tau_f - tau_c, tau_c),
+        law._sqrt(law._maximum(eta2, 0.0)), vx_, vy_, om_, vx1, vy1, om1,
+    )  # fmt: skip
+    flags = (loss < -_ENERGY_RTOL * e0,)
+    return layout.result(floats, flags, {"body": body, "law": law_name,
+                                         "regime": _REGIMES[code]}, shape)  # fmt: skip

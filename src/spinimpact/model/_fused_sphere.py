@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import core
 from .._validation import SMALLEST, available, validated, vector3
+from ._fast_sphere import SHARED_FIELDS
 
 __all__ = ["THRESHOLD", "pair_impact", "sphere_impact"]
 
@@ -60,14 +61,7 @@ def _fields(kind: type, fields: dict[str, np.ndarray], prefix: str, names: tuple
 
 def _common(fields: dict, code: np.ndarray, grips: np.ndarray, vector: type) -> dict:
     """The fields every sphere result shares, from the kernel's table."""
-    same = (
-        "normal_velocity_before", "normal_velocity_after", "tau0", "tau_star", "tau1",
-        "impulse_ratio", "kinetic_energy_before", "kinetic_energy_after", "dissipated_energy",
-        "dissipated_fraction", "work_compression_normal", "work_compression_tangential",
-        "work_restitution_normal", "work_restitution_tangential", "newton_restitution",
-        "poisson_restitution", "energetic_restitution",
-    )  # fmt: skip
-    out = {name: _owned(fields[name]) for name in same}
+    out = {name: _owned(fields[name]) for name in SHARED_FIELDS}
     for name in ("slip_before", "slip_after", "friction_impulse"):
         out[name] = _fields(vector, fields, f"{name}_", ("x", "y", "z"))
     out["regime"] = _owned(np.asarray(core.REGIMES)[code])

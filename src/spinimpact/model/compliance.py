@@ -32,12 +32,16 @@ import numpy as np
 from .._validation import check, scalar, whole
 from ..core import compliance as kernels
 from ..core import mdr
+from ..core.scalar_tangential import stronge_contact, walton_contact
+from . import _fast_tangential
+from .body import Body
 from .compliant import (
     CompliantImpact,
     CompliantSphereImpact,
     solve_compliant,
     solve_sphere_compliant,
 )
+from .impact import State
 
 __all__ = ["TangentialLaw", "Walton", "Stronge", "MindlinDeresiewicz", "CompliantImpact",
            "CompliantSphereImpact"]  # fmt: skip
@@ -106,6 +110,13 @@ class TangentialLaw:
 
     def _solve_plane(self, body: Any, vx: Any, vy: Any, omega: Any, *, mu: Any,
                      kappa: Any) -> CompliantImpact:  # fmt: skip
+        scalar = _SCALAR.get(type(self))  # the law on floats, and its parameter's name
+        if scalar is not None and isinstance(body, Body):
+            one = _fast_tangential.plane_impact(
+                scalar[0], getattr(self, scalar[1]), (CompliantImpact, State), body, vx, vy,
+                omega, mu, kappa, self.frictionless, self)  # fmt: skip
+            if one is not None:  # one impact of plain numbers: the same result, in microseconds
+                return one
         return solve_compliant(self, body, vx, vy, omega, mu=mu, kappa=kappa)
 
     def _solve_sphere(self, body: Any, velocity: Any, spin: Any, *, mu: Any, kappa: Any,
@@ -295,3 +306,9 @@ class MindlinDeresiewicz(TangentialLaw):
             else (f", springs={self.springs}, steps={self.steps}")
         )
         return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
+
+
+#: The laws whose one impact of plain numbers takes the scalar path
+#: (:mod:`spinimpact.model._fast_tangential`): their per-contact function on floats and the
+#: name of its parameter. A subclass is not in it (it may change ``rebound_slip``).
+_SCALAR = {Walton: (walton_contact, "beta0"), Stronge: (stronge_contact, "stiffness_ratio")}

@@ -270,6 +270,9 @@ def solve_pendulum(
     """
     if not isinstance(pendulum, Pendulum):
         raise TypeError(f"pendulum must be a spinimpact.Pendulum, got {type(pendulum).__name__}")
+    one = _fast_planar.pendulum_impact(PendulumImpact, State, pendulum, omega, mu, kappa, law)
+    if one is not None:  # one impact of plain numbers: the same result, in microseconds
+        return one
     om = as_real_array("omega", omega)
     vx, vy = pendulum.centre_velocity(om)
     return _solve(PendulumImpact, pendulum, vx, vy, om, mu, kappa, law)
