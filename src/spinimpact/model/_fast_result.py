@@ -132,13 +132,10 @@ class Layout:
         of the dtype the array path gives; ``rest`` is changed in place."""
         values = np.array(floats, dtype=_FLOAT)
         values.shape = (len(floats), *shape)
-        values.flags.writeable = False  # and so every row of it
-        bits = np.array(flags, dtype=np.bool_)
-        bits.shape = (len(flags), *shape)
-        bits.flags.writeable = False
+        values.setflags(write=False)  # and so every row of it
         for name, table, codes in self._all_texts:
             rest[name] = _row(table, codes[rest[name]], shape)
-        return self._make(list(values), list(bits), rest)
+        return self._make(list(values), [_row(_BITS, 1 if x else 0, shape) for x in flags], rest)
 
     def result(self, floats: tuple, flags: tuple, rest: dict[str, Any],
                shape: tuple[int, ...] | None) -> Any:  # fmt: skip
@@ -161,6 +158,8 @@ def _row(table: np.ndarray, i: int, shape: tuple[int, ...]) -> np.ndarray:
     return a if shape == (1,) else a.reshape(shape)
 
 
+#: The values of a flag, indexed by the flag: a one-element flag is a view of a row.
+_BITS = _table([False, True])
 _LAYOUTS: dict[tuple, Layout] = {}
 
 
