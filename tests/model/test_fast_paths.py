@@ -220,6 +220,7 @@ BAD = [
     dict(vx=np.array([True])), dict(vx=np.array(["1"])), dict(mu=np.array([1.0, -2.0])),
     dict(vy=np.array([[0.5]])), dict(kappa=np.array([2.0])), dict(mu=np.array([-1.0])),
     dict(vx=np.array([np.nan])), dict(omega=np.array([[np.inf]])),
+    dict(vx=np.array([2.0], dtype=object)), dict(kappa=np.array([[0.5]], dtype=object)),
 ]  # fmt: skip
 
 
@@ -265,6 +266,7 @@ SPHERE = dict(velocity=[1.0, -2.0, 0.5], spin=[0.0, 3.0, 3.0], mu=0.3, kappa=0.8
      dict(velocity=np.array([[1.0, 2.0, 0.0]])), dict(spin=[0.0, math.inf, 0.0]),
      dict(spin=np.array([[0.0, 1.0]])), dict(spin=[True, 1.0, 0.0]), dict(mu=-1.0),
      dict(mu=np.array([-1.0])), dict(kappa=np.array([[2.0]])), dict(kappa="1"),
+     dict(mu=np.array([0.3], dtype=object)), dict(velocity=np.array([1.0, -2.0, 0], object)),
      dict(velocity=[1e51, -2.0, 0.0]), dict(surface="ground"),
      dict(velocity=np.array([[1.0, -2.0, 0.0], [1.0, -2.0, 0.0]]), mu=np.array([-1.0]))],
 )  # fmt: skip

@@ -80,7 +80,7 @@ def numbers(values: tuple, rules: tuple[str, ...]) -> tuple[list[float], Any] | 
     out = []
     for x, rule in zip(values, rules):  # noqa: B905 - of one length, written together
         if type(x) is _NDARRAY and x.ndim:
-            if x.size != 1:
+            if x.size != 1 or x.dtype.type not in _NUMPY_REALS:
                 return None
             if shape is None or x.ndim > len(shape):  # every length is 1: the most dims
                 shape = x.shape

@@ -80,7 +80,7 @@ def _surface_vector(a: Any) -> tuple[tuple, tuple[int, ...]] | None:
 def _number(value: Any, rules: str) -> tuple[float | None, tuple[int, ...]]:
     """``number(value, rules)`` and the shape of an array of one element (else ``()``)."""
     if type(value) is _NDARRAY and value.ndim:
-        if value.size != 1:
+        if value.size != 1 or value.dtype.kind not in "iuf":
             return None, ()
         return number(value[(0,) * value.ndim], rules), value.shape
     return number(value, rules), ()
