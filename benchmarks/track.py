@@ -22,8 +22,11 @@ For each fold, on the training shots only:
 
 Each test shot is then predicted from its incoming samples alone (those up to the data's
 contact time): its incoming flight fitted (:func:`spinimpact.model.track_arc.fit_arc`, position,
-velocity, spin and drag coefficient), flown to the surface and bounced by each model, and
-flown on (the same flight model and drag coefficient for every model). The baselines take the
+velocity, spin and drag coefficient, with the gyrospin prior of the training shots' fit:
+:meth:`~spinimpact.model.track_fit.BounceFit.spin_prior`; ``--no-spin-prior`` leaves it out),
+flown to the surface and bounced by each model, and flown on (the same flight model and drag
+coefficient for every model; the baselines' incoming fits, for training and test shots alike,
+take the prior of the exact law selected in that fold). The baselines take the
 contact height as the median of the training shots' ``bounce_z``. Scored: the 3D distance
 between predicted and measured positions at every measured sample within 0.10 s and within
 0.25 s after the data's contact time; the rms over all of them (pooled) and per launch setting.
@@ -112,8 +115,8 @@ def _scored(shot: dict) -> np.ndarray:
     )
 
 
-def _incoming(shot: dict):
-    return fit_arc(shot["track"].select(slice(0, shot["split"])))
+def _incoming(shot: dict, prior: dict | None = None):
+    return fit_arc(shot["track"].select(slice(0, shot["split"])), spin_prior=prior)
 
 
 def _fly(arc, height: float, air: Air, after: np.ndarray, up: str, rebound=None) -> dict:
@@ -124,7 +127,7 @@ def _fly(arc, height: float, air: Air, after: np.ndarray, up: str, rebound=None)
                    np.zeros((1, 0)), after[None], up, rebound=rebound)  # fmt: skip
 
 
-def _contact_pairs(shots: list[dict], height: float, air: Air):
+def _contact_pairs(shots: list[dict], height: float, air: Air, prior: dict | None = None):
     """Velocity and spin before (incoming fit) and after (outgoing fit alone) the contact
     of each training shot with enough samples after it (tracks' frame)."""
     before, after = [], []
@@ -132,7 +135,7 @@ def _contact_pairs(shots: list[dict], height: float, air: Air):
         tr, sp = s["track"], s["split"]
         if len(tr) - sp < MIN_POST_FOR_PAIRS:
             continue
-        arc = _incoming(s)
+        arc = _incoming(s, prior)
         fl = _fly(arc, height, air, np.zeros(0), tr.up)
         tc = float(fl["contact_time"][0])
         out = fit_arc(
@@ -171,13 +174,14 @@ def _baseline_maps(before: np.ndarray, after: np.ndarray, up: str) -> dict:
     }
 
 
-def _baseline_predict(shot: dict, rebound, height: float, air: Air) -> np.ndarray:
+def _baseline_predict(shot: dict, rebound, height: float, air: Air,
+                      prior: dict | None = None) -> np.ndarray:  # fmt: skip
     tr = shot["track"]
-    fl = _fly(_incoming(shot), height, air, tr.time[_scored(shot)], tr.up, rebound)
+    fl = _fly(_incoming(shot, prior), height, air, tr.time[_scored(shot)], tr.up, rebound)
     return fl["after"][0]
 
 
-def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton")) -> dict:
+def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton"), spin_prior: bool = True) -> dict:
     shots = load()
     fold = folds(shots, k)
     air = Air(as_ball("table-tennis"))
@@ -207,8 +211,9 @@ def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton")) -> dict:
             for law in laws
         }
         best = min(laws, key=lambda law: _bic(fits[law]))
+        prior = fits[best].spin_prior() if spin_prior else None
         height = float(np.median([s["bounce"]["height"] for s in train]))
-        before, after = _contact_pairs(train, height, air)
+        before, after = _contact_pairs(train, height, air, prior)
         maps = _baseline_maps(before, after, train[0]["track"].up)
         for i in test:
             s = shots[i]
@@ -218,12 +223,13 @@ def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton")) -> dict:
             measured = s["track"].position[idx]
             incoming = s["track"].select(slice(0, s["split"]))
             for law in laws:
-                p = predict_bounce(incoming, fits[law], times=s["track"].time[idx])
+                p = predict_bounce(incoming, fits[law], times=s["track"].time[idx],
+                                   spin_prior="fit" if spin_prior else None)  # fmt: skip
                 errors[f"exact, {law}"][i] = np.linalg.norm(p.position - measured, axis=1)
             if len(laws) > 1:
                 errors["exact, selected"][i] = errors[f"exact, {best}"][i]
             for b in BASELINES:
-                pos = _baseline_predict(s, maps[b], height, air)
+                pos = _baseline_predict(s, maps[b], height, air, prior)
                 errors[b][i] = np.linalg.norm(pos - measured, axis=1)
         values = ", ".join(
             f"{law}: " + ", ".join(f"{n} {v:.4g}" for n, v in fits[law].values.items())
@@ -231,7 +237,7 @@ def run(k: int = 5, laws: tuple[str, ...] = ("rigid", "walton")) -> dict:
         )
         notes.append(
             f"fold {f + 1}: {len(train)} training shots, {len(test)} scored; {values}; "
-            f"selected {best}; e {maps['_numbers']['e']:.3f}, c "
+            f"selected {best}; gyrospin prior {prior}; e {maps['_numbers']['e']:.3f}, c "
             f"{maps['_numbers']['c']:.3f} ({len(before)} pairs); "
             f"{time.time() - t_start:.0f} s"
         )
@@ -279,9 +285,11 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--folds", type=int, default=5)
     parser.add_argument("--laws", default="rigid,walton")
+    parser.add_argument("--no-spin-prior", action="store_true",
+                        help="fit the incoming arcs without a prior on the gyrospin")  # fmt: skip
     args = parser.parse_args()
     t = time.time()
-    result = run(args.folds, tuple(args.laws.split(",")))
+    result = run(args.folds, tuple(args.laws.split(",")), not args.no_spin_prior)
     print(table(result))
     print(f"{len(result['shots'])} shots, {args.folds}-fold by shot; {time.time() - t:.0f} s")
 

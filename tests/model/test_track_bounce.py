@@ -42,6 +42,33 @@ def test_the_shared_parameters_and_the_spin_after_are_recovered(fitted, two_shot
     assert np.isnan(fitted.interval_low["mu"])  # intervals not asked for
 
 
+@pytest.mark.slow  # the joint fit of the fixture
+def test_the_fits_spin_prior_is_its_determined_shots_median_and_spread(fitted, two_shots):
+    values = {name: [s.spin_components_before[name][0] for s in fitted.shots
+                     if s.spin_components_before[name][2] == "determined"]
+              for name in ("topspin", "sidespin", "gyrospin")}  # fmt: skip
+    prior = fitted.spin_prior(("topspin", "sidespin", "gyrospin"))
+    for name, v in values.items():
+        if not v:
+            assert name not in prior
+            continue
+        mid = float(np.median(v))
+        assert prior[name] == (mid, max(1.4826 * float(np.median(np.abs(np.subtract(v, mid)))),
+                                        1.0))  # fmt: skip
+    with pytest.raises(ValueError, match="unknown spin component 'spin'"):
+        fitted.spin_prior(("spin",))
+    # predict_bounce takes the fit's gyrospin prior by default
+    track, truth = two_shots[0]
+    incoming = track.select(track.time < truth["contact_time"])
+    default = predict_bounce(incoming, fitted, horizon=0.05)
+    given = predict_bounce(incoming, fitted, horizon=0.05, spin_prior=fitted.spin_prior())
+    np.testing.assert_array_equal(default.position, given.position)
+    none = predict_bounce(incoming, fitted, horizon=0.05, spin_prior=None)
+    assert np.all(np.isfinite(none.position))
+    with pytest.raises(ValueError, match="spin_prior must be a dict, 'fit' or None"):
+        predict_bounce(incoming, fitted, spin_prior="data")
+
+
 @pytest.mark.slow  # a joint fit: several seconds
 def test_a_fixed_parameter_is_held(two_shots):
     tracks = [two_shots[0][0].select(two_shots[0][0].time > 0.15)]

@@ -33,7 +33,8 @@ from .presets import ball as as_ball
 from .track import MIN_SAMPLES, Air, Track, fly_to, frame_rotation, plain, spin_axes
 
 __all__ = ["ArcFit", "fit_arc", "covariance", "identify", "arc_positions", "IDENTIFIABILITY",
-           "OUTLIER_SIGMAS", "DETERMINED_SPIN_RATIO", "MAX_EVALUATIONS"]  # fmt: skip
+           "SPIN_COMPONENTS", "OUTLIER_SIGMAS", "DETERMINED_SPIN_RATIO",
+           "MAX_EVALUATIONS"]  # fmt: skip
 
 #: A sample whose residual exceeds this many noise deviations (in any coordinate) is an
 #: outlier: it is set aside after the robust pass (at 1-2 mm of noise, 5 deviations is 5-10 mm).
@@ -42,6 +43,8 @@ OUTLIER_SIGMAS = 5.0
 #: in units of the spin ratio ``R se / |v|``): below 0.05 ``determined``; finite but larger
 #: ``poorly determined``; infinite ``not determined locally by these data``.
 IDENTIFIABILITY = ("determined", "poorly determined", "not determined locally by these data")
+#: The spin components' names, in the order of :func:`spin_axes`.
+SPIN_COMPONENTS = ("topspin", "sidespin", "gyrospin")
 #: The spin ratio ``R se/|v|`` below which a spin component counts as determined.
 DETERMINED_SPIN_RATIO = 0.05
 #: The most evaluations of each pass of :func:`fit_arc` (a short arc, whose spin the data
@@ -66,7 +69,8 @@ class ArcFit:
     standard_error : ndarray, shape (k,)
     spin_components : dict
         ``topspin``, ``sidespin``, ``gyrospin``: ``(rad/s, standard error, word)`` along
-        :func:`spin_axes` (the word one of :data:`IDENTIFIABILITY`).
+        :func:`spin_axes` (the word one of :data:`IDENTIFIABILITY`); the standard error and
+        the word are the samples' alone, without any ``spin_prior``.
     sigma : float
         m, the noise used (given, or estimated from the kept samples' scatter).
     sigma_given : bool
@@ -156,7 +160,7 @@ def identify(spin_cov: np.ndarray, spin: np.ndarray, velocity: np.ndarray, radiu
     axes = spin_axes(velocity, up)
     speed = float(np.linalg.norm(velocity))
     out = {}
-    for name, a in zip(("topspin", "sidespin", "gyrospin"), axes, strict=True):
+    for name, a in zip(SPIN_COMPONENTS, axes, strict=True):
         used = np.abs(a) > 1e-12
         block = spin_cov[np.ix_(used, used)]
         err = float(np.sqrt(a[used] @ block @ a[used])) if np.all(np.isfinite(block)) else np.inf
@@ -179,6 +183,32 @@ def arc_positions(states: np.ndarray, t0: float, times: np.ndarray, air: Air,
     return p @ rot
 
 
+def _prior(spin_prior: Any) -> tuple[np.ndarray, np.ndarray] | None:
+    """The prior's mean and ``1 / sd`` along (topspin, sidespin, gyrospin), ``1 / sd`` 0
+    where it has none; or ``None`` for no prior."""
+    if spin_prior is None:
+        return None
+    if not isinstance(spin_prior, dict):
+        raise TypeError("spin_prior must be a dict such as {'gyrospin': (mean, sd)} (rad/s), "
+                        f"got {spin_prior!r}")  # fmt: skip
+    mean, inverse_sd = np.zeros(3), np.zeros(3)
+    for name, value in spin_prior.items():
+        if name not in SPIN_COMPONENTS:
+            raise ValueError(f"spin_prior: unknown component {name!r}; the components are "
+                             f"{', '.join(SPIN_COMPONENTS)}")  # fmt: skip
+        try:
+            m, sd = (float(v) for v in value)
+        except (TypeError, ValueError):
+            raise TypeError(f"spin_prior[{name!r}] must be (mean, sd) in rad/s, got "
+                            f"{value!r}") from None  # fmt: skip
+        if not (np.isfinite(m) and sd > 0 and not np.isnan(sd)):
+            raise ValueError(f"spin_prior[{name!r}] must be a finite mean and an sd > 0 "
+                             f"(rad/s), got {value!r}")  # fmt: skip
+        j = SPIN_COMPONENTS.index(name)
+        mean[j], inverse_sd[j] = m, 1.0 / sd
+    return mean, inverse_sd
+
+
 def _start(track: Track, t0: float, gravity: float) -> np.ndarray:
     """A starting state from a quadratic fit of each coordinate near ``t0``."""
     s = track.time - t0
@@ -196,7 +226,7 @@ def _jacobian(fun: Any, x: np.ndarray, step: np.ndarray) -> np.ndarray:
 def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None = None,
             sigma: float | None = None, drag_coefficient: float | str = "fit",
             air_density: float = AIR_DENSITY, gravity: float = GRAVITY,
-            start: Any = None) -> ArcFit:  # fmt: skip
+            start: Any = None, spin_prior: Any = None) -> ArcFit:  # fmt: skip
     """Fit one flight (position, velocity and spin at a time) to a track's positions.
 
     Parameters
@@ -218,6 +248,14 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
     start : array_like, shape (9,) or (10,), optional
         A starting state (track's frame), with ``C_D`` last; by default from quadratic fits
         of the positions and the ball's ``C_D``.
+    spin_prior : dict, optional
+        A Gaussian prior on spin components: ``{"gyrospin": (mean, sd)}`` (rad/s), any of
+        ``topspin``, ``sidespin`` and ``gyrospin`` (along :func:`spin_axes` of the fitted
+        velocity). Each adds one residual, ``s (component - mean) / sd`` (``s`` the noise),
+        so the fit is the posterior mode and the covariance the posterior's (linearized). A
+        component the samples hardly determine then stays near what other shots showed
+        (:meth:`~spinimpact.model.track_fit.BounceFit.spin_prior`) instead of wherever the
+        noise takes it; one they determine well is barely moved. Default: none.
 
     Returns
     -------
@@ -268,6 +306,7 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
     if not free_drag:
         x0[9] = cd
     k = 10 if free_drag else 9
+    prior = _prior(spin_prior)
     step = np.r_[np.full(3, 1e-6), np.full(3, 1e-5), np.full(3, 1e-2), 1e-4][:k]
     scale = np.r_[np.full(3, 1e-3), np.full(3, 1e-2), np.full(3, 30.0), 0.05][:k]
 
@@ -276,9 +315,20 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
 
         def fun(y: np.ndarray) -> np.ndarray:
             states = np.column_stack([y[:, :9], y[:, 9] if free_drag else np.full(len(y), cd)])
-            return (arc_positions(states, t0, times, air, rot) - meas).reshape(len(y), -1)
+            r = (arc_positions(states, t0, times, air, rot) - meas).reshape(len(y), -1)
+            if prior is None:
+                return r
+            return np.hstack([r, prior_rows(y)])
 
         return fun
+
+    prior_noise = [sigma or 2e-3]  # the robust pass's scale; then the noise estimated
+
+    def prior_rows(y: np.ndarray) -> np.ndarray:
+        """``s (component - mean) / sd`` for each state of the batch ``y`` (b, 3)."""
+        axes = np.stack([spin_axes(v, track.up) for v in y[:, 3:6]])
+        parts = np.einsum("bij,bj->bi", axes, y[:, 6:9]) - prior[0]
+        return prior_noise[0] * parts * prior[1]
 
     low = np.r_[np.full(9, -np.inf), 0.0][:k]
 
@@ -290,8 +340,9 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
 
     everything = np.ones(len(track), dtype=bool)
     robust = solve(everything, x0[:k], "soft_l1", 3.0 * (sigma or 2e-3))
-    res = batch(everything)(robust.x[None])[0].reshape(-1, 3)
+    res = batch(everything)(robust.x[None])[0][: 3 * len(track)].reshape(-1, 3)
     noise = sigma or max(1.4826 * float(np.median(np.abs(res))), 1e-5)
+    prior_noise[0] = noise
     outliers = np.any(np.abs(res) > OUTLIER_SIGMAS * noise, axis=1)
     keep = ~outliers
     if 3 * keep.sum() <= k:
@@ -299,15 +350,18 @@ def fit_arc(track: Track, ball: Ball | str = "table-tennis", *, at: float | None
                          f"setting aside {int(outliers.sum())} outlier(s); too few for a "
                          "flight")  # fmt: skip
     x = solve(keep, robust.x, "linear", 1.0).x
-    resid = -batch(everything)(x[None])[0].reshape(-1, 3)
+    resid = -batch(everything)(x[None])[0][: 3 * len(track)].reshape(-1, 3)
     chi = float(np.sum(resid[keep] ** 2))
     dof = int(3 * keep.sum() - k)
     s2 = sigma**2 if sigma is not None else chi / max(dof, 1)
-    cov = covariance(_jacobian(batch(keep), x, step), s2)
+    prior_noise[0] = float(np.sqrt(s2))  # the prior's rows in units of the noise used
+    jac = _jacobian(batch(keep), x, step)
+    cov = covariance(jac, s2)  # with a prior, the posterior's
+    data_cov = cov if prior is None else covariance(jac[: 3 * int(keep.sum())], s2)
     return ArcFit(
         name=track.name, time=t0, position=x[:3], velocity=x[3:6], spin=x[6:9],
         covariance=cov, standard_error=np.sqrt(np.diag(cov)),
-        spin_components=identify(cov[6:9, 6:9], x[6:9], x[3:6], ball_.radius, track.up),
+        spin_components=identify(data_cov[6:9, 6:9], x[6:9], x[3:6], ball_.radius, track.up),
         sigma=float(np.sqrt(s2)), sigma_given=sigma is not None,
         rms=float(np.sqrt(np.mean(np.sum(resid[keep] ** 2, axis=1)))), outliers=outliers,
         fitted=track.position - resid, residuals=resid, chi2=chi / s2, dof=dof,

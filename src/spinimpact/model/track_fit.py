@@ -29,7 +29,15 @@ from .presets import Ball, Ground
 from .presets import ball as as_ball
 from .presets import ground as as_ground
 from .track import Air, Bounce, Track, find_bounce, plain
-from .track_arc import OUTLIER_SIGMAS, ArcFit, covariance, fit_arc, identify
+from .track_arc import (
+    IDENTIFIABILITY,
+    OUTLIER_SIGMAS,
+    SPIN_COMPONENTS,
+    ArcFit,
+    covariance,
+    fit_arc,
+    identify,
+)
 from .track_bounce import BOUNDS, CONTACT, LAWS, AtContact, flights, padded
 from .track_joint import Joint, profile
 
@@ -167,6 +175,41 @@ class BounceFit:
                          f"{1e3 * s.rms_before:.2f} mm before, {1e3 * s.rms_after:.2f} mm after, "
                          f"{int(s.outliers.sum())} outlier(s)")  # fmt: skip
         return "\n".join(lines)
+
+    def spin_prior(self, components: Any = ("gyrospin",)) -> dict[str, tuple[float, float]]:
+        """A prior for the spin of new shots like these (empirical Bayes), for
+        :func:`~spinimpact.model.track_fit.fit_arc`'s and
+        :func:`~spinimpact.model.track_predict.predict_bounce`'s ``spin_prior``.
+
+        For each component named, the median and the robust standard deviation (1.4826
+        times the median absolute deviation, at least 1 rad/s) of the shots' spin before
+        the bounce, over the shots whose fit determines it (``determined``): there the
+        outgoing flight, through the bounce law, shows what the incoming arc alone cannot.
+        The gyrospin (about the heading) acts on an incoming flight only through the lift's
+        saturation, so an incoming arc leaves it loose, and the bounce law turns it into a
+        sideways velocity; the default prior holds it near what the fitted shots showed.
+
+        Parameters
+        ----------
+        components : sequence of str
+            Of ``topspin``, ``sidespin``, ``gyrospin``.
+
+        Returns
+        -------
+        dict
+            ``{component: (mean, sd)}``, rad/s; a component no shot determines is left out.
+        """
+        out = {}
+        for name in components:
+            if name not in SPIN_COMPONENTS:
+                raise ValueError(f"unknown spin component {name!r}; the components are "
+                                 f"{', '.join(SPIN_COMPONENTS)}")  # fmt: skip
+            v = np.array([s.spin_components_before[name][0] for s in self.shots
+                          if s.spin_components_before[name][2] == IDENTIFIABILITY[0]])  # fmt: skip
+            if v.size:
+                mid = float(np.median(v))
+                out[name] = (mid, max(1.4826 * float(np.median(np.abs(v - mid))), 1.0))
+        return out
 
     def to_dict(self) -> dict[str, Any]:
         """Every field as plain numbers, lists and dicts."""

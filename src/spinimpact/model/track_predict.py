@@ -74,7 +74,8 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
                    ball: Ball | str | None = None, law: str | None = None, times: Any = None,
                    horizon: float = 0.25, until: float | None = None, sigma: float | None = None,
                    confidence: float = 0.95, air_density: float | None = None,
-                   gravity: float | None = None) -> Prediction:  # fmt: skip
+                   gravity: float | None = None,
+                   spin_prior: Any = "fit") -> Prediction:  # fmt: skip
     """Predict the bounce and the outgoing flight from a track's incoming samples alone.
 
     Parameters
@@ -99,6 +100,13 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
         m, the noise of a coordinate of the incoming samples (default: estimated).
     confidence : float
         Of the band.
+    spin_prior : dict, "fit" or None
+        The incoming fit's prior on spin components (:func:`fit_arc`'s ``spin_prior``,
+        ``{"gyrospin": (mean, sd)}`` in rad/s). ``"fit"`` (the default): the gyrospin of
+        the shots ``shared`` was fitted to (:meth:`BounceFit.spin_prior`), when ``shared``
+        is a :class:`BounceFit`, and none otherwise; ``None``: none. The incoming arc alone
+        leaves the gyrospin loose, and the law turns it into a sideways velocity after the
+        bounce (``docs/track.md`` measures what the prior changes).
 
     Returns
     -------
@@ -132,8 +140,13 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
     if "lift_slope" in values:  # the ball's lift slope, fitted or given: flown throughout
         names += ("lift_slope",)
         ball_ = ball_.replace(lift_slope=float(values["lift_slope"]))
+    if isinstance(spin_prior, str):
+        if spin_prior != "fit":
+            raise ValueError(f"spin_prior must be a dict, 'fit' or None, got {spin_prior!r}")
+        spin_prior = shared.spin_prior() if isinstance(shared, BounceFit) else None
     incoming = track if until is None else track.select(track.time < until)
-    arc = fit_arc(incoming, ball_, sigma=sigma, air_density=density, gravity=g)
+    arc = fit_arc(incoming, ball_, sigma=sigma, air_density=density, gravity=g,
+                  spin_prior=spin_prior)  # fmt: skip
     air = Air(ball_, density, g)
     t0 = arc.time
     base = arc.state
