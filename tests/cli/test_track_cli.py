@@ -51,6 +51,10 @@ def test_fit_and_predict_write_the_json_and_the_figure(tmp_path):
     assert d["bounce_fit"]["free"] == ["mu"]
     assert 0.15 < d["bounce_fit"]["values"]["mu"] < 0.25  # the truth is 0.2
     assert len(d["flights"]) == 1 and len(d["predictions"]) == 2
+    # the gyrospin prior of the predictions is said when a fitted shot determined it
+    gyro = [s["spin_components_before"]["gyrospin"] for s in d["bounce_fit"]["shots"]]
+    said = "the gyrospin of each incoming fit held near" in out.stdout
+    assert said == any("determined" == str(g[-1]) for g in gyro), gyro
     assert not list(tmp_path.glob("*.tmp*"))
 
 

@@ -125,8 +125,11 @@ def track_command(**o: Any) -> None:
     predictions = []
     if o["predict"]:
         stage(f"predicting the bounces of {len(tracks)} track(s) from their incoming samples")
+        held = "".join(f"; the {name} of each incoming fit held near {m:.0f} +- {sd:.0f} "
+                       "rad/s, as the fitted tracks showed"
+                       for name, (m, sd) in fit.spin_prior().items())  # fmt: skip
         echo(f"predicted from the incoming samples alone ({o['tangential']} law, parameters "
-             "fitted to the tracks with a bounce above):")  # fmt: skip
+             f"fitted to the tracks with a bounce above{held}):")  # fmt: skip
         for i, tr in enumerate(tracks):
             sp = splits.get(i)
             if sp is None:
