@@ -175,6 +175,31 @@ def late_phase_rows() -> list[tuple[str, int, int, float]]:
     return rows
 
 
+def micro_slip_line(n: int = 100_000) -> str:
+    """``solve`` under ``MindlinDeresiewicz`` read from its table against Walton's law on
+    the same ``n`` rows, each with its own ``kappa`` (in the table's ``[0.85, 1]``): the
+    ratio of their best times in this run."""
+    from spinimpact import MindlinDeresiewicz, Walton
+    from spinimpact.core.mdr_table import table_rows
+
+    rng = np.random.default_rng(3)
+    ball = Body.solid_sphere(mass=0.0027, radius=0.02)
+    vx, vy, om = rng.uniform(-6, 6, n), -rng.uniform(0.5, 8, n), rng.uniform(-300, 300, n)
+    kappa = rng.uniform(0.85, 1.0, n)
+    law = MindlinDeresiewicz(poisson_ratio=0.3)
+    served = float(table_rows(3.5, 0.3, kappa, law.stiffness_ratio).mean())
+
+    def run(tangential):
+        return lambda: solve(ball, vx, vy, om, mu=0.3, kappa=kappa, tangential=tangential)
+
+    run(law)(), run(Walton(0.3))()  # the table's loading and first calls outside the timing
+    t_table, t_walton = best(run(law), 5), best(run(Walton(0.3)), 5)
+    return (f"MindlinDeresiewicz from its table, {n:,} rows with {n:,} distinct kappa "
+            f"({served:.0%} of them in the table): {t_table / t_walton:.2f} times Walton's "
+            f"law on the same rows ({t_walton / n * 1e9:.0f} ns a row), both in this "
+            "run")  # fmt: skip
+
+
 def fit_benchmark(n: int = 10_000) -> tuple[float, float]:
     """Time of ``spinimpact.fit`` (rigid model, constant kappa, profile intervals included)
     on ``n`` noisy synthetic bounces, and of one vectorized ``solve()`` of the same
@@ -347,6 +372,7 @@ def main() -> None:
         f"{t_fit:.2f} s, {t_fit / t_solve:,.0f} times one vectorized solve() of them "
         f"({t_solve * 1e3:.1f} ms), both in this run"
     )
+    console.print(micro_slip_line())  # the micro-slip law from its table, a kappa per row
     from benchmarks.flight_bench import flight_benchmark
     from benchmarks.flight_bench import line as flight_line
 

@@ -54,7 +54,7 @@ def test_parameters_and_errors():
     assert law.stiffness_ratio == pytest.approx(1.5 / 1.75, rel=1e-15)
     assert law.to_dict() == {"law": "mindlin-deresiewicz", "poisson_ratio": 0.25,
                              "stiffness_ratio": law.stiffness_ratio, "springs": 256,
-                             "steps": 2048}  # fmt: skip
+                             "steps": 2048, "method": "table"}  # fmt: skip
     assert repr(law) == "MindlinDeresiewicz(poisson_ratio=0.25)"
     assert repr(MindlinDeresiewicz(stiffness_ratio=2.0, springs=8, steps=64)) == (
         "MindlinDeresiewicz(stiffness_ratio=2.0, springs=8, steps=64)"

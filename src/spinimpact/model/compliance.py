@@ -6,8 +6,8 @@
 * :class:`Stronge`: Stronge's lumped-parameter contact, a normal and a tangential spring
   whose stiffness ratio follows from Poisson's ratio (Mindlin).
 * :class:`MindlinDeresiewicz`: Hertz contact, elastic in shear with Coulomb friction at
-  every point of the contact area (micro-slip), solved in time (the model closest to the
-  measured bounces of ``docs/validation.md``).
+  every point of the contact area (micro-slip), solved in time or read from a precomputed
+  table (the model closest to the measured bounces of ``docs/validation.md``).
 
 Each gives the tangential restitution of the contact point ``beta = -u^+/u^-`` and reduces
 to the rigid law in its rigid limit (``beta0 = 0``; a tangential spring infinitely stiff).
@@ -31,7 +31,7 @@ import numpy as np
 
 from .._validation import check, scalar, whole
 from ..core import compliance as kernels
-from ..core import mdr
+from ..core import mdr, mdr_table
 from ..core.scalar_tangential import stronge_contact, walton_contact
 from . import _fast_tangential
 from .body import Body
@@ -245,6 +245,13 @@ class MindlinDeresiewicz(TangentialLaw):
         Resolution: springs of the reduced contact and time steps of an impact (defaults
         256 and 2048: within ``1e-5`` of ``|v_n^-|`` of four times finer in the slip after
         on random impacts with ``mu <= 0.8``; within ``5e-5`` in the no-slip limit).
+    method : {"table", "integrate"}
+        ``"table"`` (the default): the impacts inside the precomputed table's range
+        (:mod:`spinimpact.core.mdr_table`: ``kappa`` in ``[0.85, 1]``, ``zeta r`` in
+        ``[2, 4]``, ``(1 + kappa) zeta mu`` small enough for its error, the default
+        resolution) are read from it, within ``1e-4`` of ``|v_n^-|`` of the solution in time
+        in the slip after, in microseconds; every other impact is solved in time.
+        ``"integrate"``: every impact is solved in time.
 
     Notes
     -----
@@ -256,7 +263,9 @@ class MindlinDeresiewicz(TangentialLaw):
     :mod:`spinimpact.core.mdr`. The contact is taken to be circular (a sphere's); with a
     non-spherical :class:`~spinimpact.Body` only its mass, inertia and contact radius enter.
     Cost: about ``springs * steps`` operations per impact, impacts stepped together
-    (``python -m benchmarks.compliance`` measures it).
+    (``python -m benchmarks.compliance`` measures it), and tens of milliseconds for each
+    distinct ``kappa``; an impact read from the table costs about what Walton's law costs
+    (``docs/compliance.md``).
 
     Examples
     --------
@@ -272,6 +281,7 @@ class MindlinDeresiewicz(TangentialLaw):
     stiffness_ratio: float | None = None
     springs: int = 256
     steps: int = 2048
+    method: str = "table"
     name: ClassVar[str] = "mindlin-deresiewicz"
 
     def __post_init__(self) -> None:
@@ -284,6 +294,8 @@ class MindlinDeresiewicz(TangentialLaw):
         if self.springs * self.steps > MAX_CELLS:  # the tables of one kappa: 8 bytes a cell
             raise ValueError(f"springs * steps must be at most {MAX_CELLS} (memory), got "
                              f"{self.springs} * {self.steps}")  # fmt: skip
+        if self.method not in ("table", "integrate"):
+            raise ValueError(f"method must be 'table' or 'integrate', got {self.method!r}")
 
     kappa_rule: ClassVar[str] = ("> 0 under MindlinDeresiewicz (Hunt-Crossley damping "
                                  "cannot stop the ball: kappa in (0, 1])")  # fmt: skip
@@ -293,8 +305,9 @@ class MindlinDeresiewicz(TangentialLaw):
         return np.asarray(kappa) > 0.0
 
     def rebound_slip(self, slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
-        return mdr.mdr_slip(slip, vy, zeta, mu, kappa, self.stiffness_ratio,
-                            springs=self.springs, steps=self.steps)  # fmt: skip
+        solver = mdr_table.table_slip if self.method == "table" else mdr.mdr_slip
+        return solver(slip, vy, zeta, mu, kappa, self.stiffness_ratio, springs=self.springs,
+                      steps=self.steps)  # fmt: skip
 
     def __repr__(self) -> str:
         which = ("poisson_ratio", self.poisson_ratio)
@@ -305,6 +318,8 @@ class MindlinDeresiewicz(TangentialLaw):
             if (self.springs, self.steps) == (256, 2048)
             else (f", springs={self.springs}, steps={self.steps}")
         )
+        if self.method != "table":
+            extra += f", method={self.method!r}"
         return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
 
 
