@@ -48,14 +48,15 @@ Along ``X``, ``phi`` changes regime at
   is slower than the Coulomb bound of the centre grows, ``U_A`` about ``1 + a``); just above
   it ``phi`` grows like ``(X - X_A)^{3/2}``.
 
-Elsewhere in ``(q, kappa)`` (``kappa`` below about 0.85, ``q`` above about 4.5 or below 2)
-``phi`` has further corners whose number and place change with ``q`` and ``kappa`` (more
+Elsewhere in ``(q, kappa)`` (on a coarse map of ``kappa`` in ``[0.5, 1]`` and ``q`` in
+``[1.8, 6]``: ``kappa`` below about 0.85 at ``q = 2`` or 0.7 at ``q = 3.5``, and ``q`` above
+about 4.2) ``phi`` has further corners whose number and place change with ``q`` and ``kappa`` (more
 stick-slip transitions while the tangential oscillation reverses): a grid resolves them only
 at a cost the table does not pay, and those impacts are solved in time.
 
 Range, grid and error
 ---------------------
-``kappa`` in ``[0.85, 1]`` (13 equal steps' nodes), ``q = zeta r`` in ``[2, 4]`` (41 nodes):
+``kappa`` in ``[0.85, 1]`` (13 nodes), ``q = zeta r`` in ``[2, 4]`` (41 nodes):
 a sphere (``zeta = 7/2``) at any Poisson ratio in ``[0, 0.5]`` (``r = 2(1 - nu)/(2 - nu)`` in
 ``[2/3, 1]``: ``q`` in ``[2.33, 3.5]``), a disk (3, ``q`` in ``[2, 3]``), a thin shell
 (5/2) with ``nu <= 1/3``. ``X`` is cut at ``X_A`` and ``X*``: on ``[0, X_A]`` the table's
@@ -71,14 +72,15 @@ The table's error in ``phi``, measured against the full solution at its default 
 benchmarks.mdr_table``, which builds the table and stores that figure in it as
 ``max_error``), is at most ``8.9e-6``; the error in the slip after is ``(1 + kappa)
 zeta mu |v_n^-|`` times it. :func:`table_slip` uses the table only where :data:`MARGIN`
-times that is at most :data:`BOUND`, ``1e-4 |v_n^-|`` (``(1 + kappa) zeta mu <= 5.6``; a sphere at
-``kappa = 1``: ``mu <= 0.80``), and solves every other impact in time with
+times that is at most :data:`BOUND`, ``1e-4 |v_n^-|`` (``(1 + kappa) zeta mu <= 5.6``; a
+sphere at ``kappa = 1``: ``mu <= 0.80``), and solves every other impact in time with
 :func:`spinimpact.core.mdr.mdr_slip`.
 
 ``stuck`` (whether the centre of the contact stuck at some time) is ``|X| < X*`` with the
 interpolated ``X*``: it can differ from the full solution's within the table's error of
-``X*`` (up to ``3e-5`` of ``X*``, measured at 24 random points) of the threshold. Both flow into the result's ``regime``; every
-other field of the result follows from the slip after as it does for the solution in time.
+``X*`` (up to ``3e-5`` of ``X*``, measured at 24 random points) of the threshold. Both
+flow into the result's ``regime``; every other field of the result follows from the slip
+after as it does for the solution in time.
 """
 
 from __future__ import annotations
