@@ -79,6 +79,9 @@ def test_numba_and_numpy_read_the_same_table():
     np.testing.assert_allclose(compiled[0], arrays[0], rtol=1e-13, atol=1e-15)  # rounding
     np.testing.assert_array_equal(compiled[1], arrays[1])
     assert mt.impulse_share(x[:6].reshape(2, 3), 3.0, 0.9)[0].shape == (2, 3)
+    for engine in ("numba", "numpy"):
+        share, stuck = mt.impulse_share([np.nan, np.inf], 3.0, 0.9, engine=engine)
+        assert np.isnan(share[0]) and share[1] == 1.0 and not stuck.any()
 
 
 def test_gross_slip_is_the_closed_form_and_the_share_is_odd():

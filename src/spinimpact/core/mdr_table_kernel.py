@@ -36,6 +36,9 @@ if HAVE_NUMBA:  # pragma: no branch - the test extra installs Numba
     def _share_rows(x, q, kappa, axes, touch, threshold, share, out_share, out_stuck):
         k0, kh, nk, q0, qh, nq, t0, th, nt = axes
         for n in numba.prange(x.size):
+            if math.isnan(x[n]):  # as NumPy's path: no share, never stuck
+                out_share[n], out_stuck[n] = math.nan, False
+                continue
             wk, wq, wt = np.empty(4), np.empty(4), np.empty(4)
             fk = _place(kappa[n], k0, kh, int(nk), wk)
             fq = _place(q[n], q0, qh, int(nq), wq)
