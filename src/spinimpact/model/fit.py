@@ -189,13 +189,16 @@ def fit(
         its ``zeta = 1 + R^2/rho^2`` decides how much a bounce's spin changes. Its radius
         turns spin into contact-point speed; its mass does not matter (the rebound
         velocities do not depend on it).
-    model : {"rigid", "walton", "stronge"}
+    model : {"rigid", "walton", "stronge", "mindlin-deresiewicz"}
         The tangential model (:data:`~spinimpact.model.fit_models.TANGENTIAL`):
         ``"rigid"`` (Coulomb friction ``mu``, the paper's closed form);
         ``"walton"`` (``mu`` and Walton's tangential restitution ``beta0`` of
         :class:`~spinimpact.model.compliance.Walton`); ``"stronge"`` (``mu`` and the
         ``poisson_ratio`` of :class:`~spinimpact.model.compliance.Stronge`'s lumped
-        tangential compliance).
+        tangential compliance); ``"mindlin-deresiewicz"`` (``mu`` and the
+        ``poisson_ratio`` of Hertz-Mindlin-Deresiewicz micro-slip,
+        :class:`~spinimpact.model.compliance.MindlinDeresiewicz`: read from its table where
+        ``kappa >= 0.85``, solved in time, much slower, elsewhere).
     restitution : {"constant", "power"} or sequence of float
         ``kappa`` constant; ``kappa = kappa_ref (|vy|/v_ref)^exponent`` (clipped to
         ``[0, 1]``); or knot speeds (m/s) at which ``kappa`` is fitted and between which

@@ -31,6 +31,13 @@ __all__ = ["Parameter", "FitModel", "make_model", "TANGENTIAL", "LAWS", "MU_INFI
 LAWS = {
     "walton": ("Walton", "beta0", -1.0, 1.0, "tangential restitution of sticking impacts"),
     "stronge": ("Stronge", "poisson_ratio", -0.999, 0.5, "Poisson's ratio (Mindlin's k_t/k_n)"),
+    "mindlin-deresiewicz": (
+        "MindlinDeresiewicz",
+        "poisson_ratio",
+        -0.999,
+        0.5,
+        "Poisson's ratio (Mindlin's k_t/k_n), with micro-slip",
+    ),
 }
 #: Tangential models: the rigid Coulomb contact of the paper, then each compliance law.
 TANGENTIAL = ("rigid", *(k for k, v in LAWS.items() if hasattr(compliance, v[0])))

@@ -147,10 +147,12 @@ def fit_problem(
     body : Body or Ball, optional
         The body, for problems with body inputs: fixes ``mass``, ``radius`` and
         ``gyration`` (of the first body of a pair).
-    tangential : None, "walton", "stronge", Walton or Stronge
+    tangential : None, "walton", "stronge", "mindlin-deresiewicz", or such a law
         The tangential law: ``None`` the rigid law; a law instance holds its parameter
         fixed (unless named in ``free``); a law's name fits its parameter (``beta0``;
-        ``poisson_ratio``).
+        ``poisson_ratio``). Micro-slip (``MindlinDeresiewicz``) is read from its table where
+        ``kappa >= 0.85`` and solved in time elsewhere, which makes each evaluation of
+        the fit slower there.
     confidence : float
         Level of the profile-likelihood intervals, in ``(0.5, 1)``.
     start : dict, optional

@@ -48,7 +48,7 @@ def default_free(declared: Problem, given: Any, fixed: Any, tangential: Any = No
     out = [i.name for i in declared.inputs
            if i.fittable and i.name not in given and i.name not in fixed
            and i.name not in bodies]  # fmt: skip
-    named = {"walton": "beta0", "stronge": "poisson_ratio"}
+    named = {"walton": "beta0", "stronge": "poisson_ratio", "mindlin-deresiewicz": "poisson_ratio"}
     if isinstance(tangential, str) and tangential in named and named[tangential] not in fixed:
         out.append(named[tangential])
     return out
@@ -92,7 +92,12 @@ class _Model:
         p = self.values(theta)
         law = self.law
         if self.law_name is not None:
-            law = type(self.law)(**{self.law_name: p.pop(self.law_name)})
+            keep = (
+                {"springs": law.springs, "steps": law.steps, "method": law.method}
+                if isinstance(law, compliance.MindlinDeresiewicz)
+                else {}
+            )  # its resolution
+            law = type(self.law)(**{self.law_name: p.pop(self.law_name)}, **keep)
         shape = np.broadcast_shapes((self.n,), *(np.shape(v) for v in p.values()))
         cols = {}
         for name, column in self.base.items():
@@ -144,18 +149,23 @@ def _law(tangential: Any, declared: Problem) -> tuple[Any, Parameter | None, flo
         )
     named = isinstance(tangential, str)
     if named:
-        laws = {"walton": compliance.Walton(0.0), "stronge": compliance.Stronge(0.3)}
+        laws = {
+            "walton": compliance.Walton(0.0),
+            "stronge": compliance.Stronge(0.3),
+            "mindlin-deresiewicz": compliance.MindlinDeresiewicz(poisson_ratio=0.3),
+        }
         if tangential not in laws:
             raise ValueError(
-                f"tangential must be 'rigid', 'walton', 'stronge' or a Walton or Stronge "
-                f"law, got {tangential!r}"
+                "tangential must be 'rigid', 'walton', 'stronge', 'mindlin-deresiewicz' or a "
+                f"Walton, Stronge or MindlinDeresiewicz law, got {tangential!r}"
             )
         tangential = laws[tangential]
     if isinstance(tangential, type):
         raise TypeError(
             f"tangential must be a law, not its class: write {tangential.__name__}(...)"
         )
-    if isinstance(tangential, compliance.Walton | compliance.Stronge):
+    if isinstance(tangential, compliance.Walton | compliance.Stronge
+                  | compliance.MindlinDeresiewicz):  # fmt: skip
         name = "beta0" if isinstance(tangential, compliance.Walton) else "poisson_ratio"
         if name == "poisson_ratio" and tangential.poisson_ratio is None:
             spec = Parameter("stiffness_ratio", 1e-6, 1e6, "1", "tangential over normal stiffness")
@@ -165,13 +175,12 @@ def _law(tangential: Any, declared: Problem) -> tuple[Any, Parameter | None, flo
         return tangential, spec, float(getattr(tangential, spec.name)), named
     if isinstance(tangential, compliance.TangentialLaw):
         raise ValueError(
-            f"a fit takes the rigid law, Walton or Stronge; {tangential!r} is not offered "
-            "yet (its impacts are solved by stepping, too slow for the many evaluations of "
-            "a fit)"
+            f"a fit takes the rigid law, Walton, Stronge or MindlinDeresiewicz; {tangential!r} "
+            "is not offered"
         )
     raise TypeError(
-        "tangential must be None (the rigid law), 'walton', 'stronge', or a Walton or "
-        f"Stronge law, got {tangential!r}"
+        "tangential must be None (the rigid law), 'walton', 'stronge', 'mindlin-deresiewicz', "
+        f"or a Walton, Stronge or MindlinDeresiewicz law, got {tangential!r}"
     )
 
 
