@@ -48,7 +48,10 @@ engines and compares their output with :func:`spinimpact.solve`. Its modules:
 :mod:`~spinimpact.engines.compare` (:func:`bounce`),
 :mod:`~spinimpact.engines.common` (:class:`EngineRun`, :func:`standard_cases`,
 :data:`CONFIGURATIONS`, the scene and the axes), and one module per engine,
-:mod:`~spinimpact.engines.pybullet` and :mod:`~spinimpact.engines.mujoco`.
+:mod:`~spinimpact.engines.pybullet` and :mod:`~spinimpact.engines.mujoco`; and the
+impact hooks, which make one body's impacts on a plane exact inside the engine's own
+time loop: :mod:`~spinimpact.engines.hook` (:class:`HookStep`, :class:`HookImpact`),
+:class:`MujocoHook` and :class:`PybulletHook` (``docs/engine_hook.md``).
 
 References
 ----------
@@ -64,6 +67,9 @@ from __future__ import annotations
 
 from .common import CONFIGURATIONS, ENGINES, EngineRun, available, standard_cases
 from .compare import bounce
+from .hook import HookImpact, HookStep
+from .hook_mujoco import MujocoHook
+from .hook_pybullet import PybulletHook
 from .pybullet import PYBULLET_DEFAULTS
 
 #: Modules the docstring examples need (tests/test_docs.py skips them without).
@@ -74,6 +80,10 @@ __all__ = [
     "PYBULLET_DEFAULTS",
     "ENGINES",
     "EngineRun",
+    "HookImpact",
+    "HookStep",
+    "MujocoHook",
+    "PybulletHook",
     "available",
     "bounce",
     "standard_cases",

@@ -1,0 +1,453 @@
+"""spinimpact.engines.MujocoHook and PybulletHook: exact impacts inside the engines' loops.
+
+The reference is computed here from the launch state alone, without the hook's code:
+the closed-form parabola to the contact (a root of the centre's height for a ball, of
+the lowest corner's for a turning cube, by SciPy's brentq), the law
+(:func:`spinimpact.solve_sphere`, :func:`spinimpact.solve_rigid`) and the parabola after.
+"""
+
+import numpy as np
+import pytest
+
+from spinimpact import Body, RigidBody, Surface, Walton, solve_rigid, solve_sphere
+from spinimpact import engines as E
+
+from .bodies import needs
+
+RADIUS, MASS, G = 0.1, 1.0, 9.81
+FLOOR = Surface(normal=(0.0, 0.0, 1.0))
+DOWN = np.array([0.0, 0.0, -G])
+BALL = Body(mass=MASS, radius=RADIUS, gyration=RADIUS * np.sqrt(0.4))
+
+
+def mujoco_ball(timestep=0.002):
+    import mujoco
+
+    xml = (
+        f'<mujoco><option timestep="{timestep}" gravity="0 0 {-G}"/><worldbody>'
+        '<geom name="floor" type="plane" size="0 0 1"/>'
+        f'<body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="{RADIUS}" '
+        f'mass="{MASS}"/></body></worldbody></mujoco>'
+    )
+    model = mujoco.MjModel.from_xml_string(xml)
+    return model, mujoco.MjData(model)
+
+
+class MujocoBall:
+    """One MuJoCo model, relaunched for every ball."""
+
+    def __init__(self):
+        import mujoco
+
+        self.mj = mujoco
+        self.model, self.data = mujoco_ball()
+        self.timestep = self.model.opt.timestep
+
+    def launch(self, x, v, w, **law):
+        self.mj.mj_resetData(self.model, self.data)
+        d = self.data
+        d.qpos[:3], d.qvel[:3], d.qvel[3:] = x, v, w  # unrotated: body frame = world
+        return E.MujocoHook(self.model, self.data, "ball", **law)
+
+    def state(self):
+        d = self.data
+        q = d.qpos[3:] / np.linalg.norm(d.qpos[3:])
+        return d.qpos[:3].copy(), d.qvel[:3].copy(), _matrix(q) @ d.qvel[3:]
+
+
+class PybulletBall:
+    """One PyBullet world with gravity, its ball relaunched for every case."""
+
+    def __init__(self):
+        import pybullet as pb
+
+        self.pb = pb
+        self.client = pb.connect(pb.DIRECT)
+        kw = self.kw = {"physicsClientId": self.client}
+        self.timestep = 1.0 / 240.0
+        pb.setGravity(0, 0, -G, **kw)
+        pb.setTimeStep(self.timestep, **kw)
+        self.plane = pb.createMultiBody(0, pb.createCollisionShape(pb.GEOM_PLANE, **kw), **kw)
+        shape = pb.createCollisionShape(pb.GEOM_SPHERE, radius=RADIUS, **kw)
+        self.ball = pb.createMultiBody(MASS, shape, basePosition=[0, 0, 1], **kw)
+        pb.changeDynamics(
+            self.ball, -1, linearDamping=0.0, angularDamping=0.0, maxJointVelocity=1e30,
+            localInertiaDiagonal=[0.4 * MASS * RADIUS**2] * 3, **kw,
+        )  # fmt: skip
+
+    def launch(self, x, v, w, **law):
+        pb, kw = self.pb, self.kw
+        pb.resetBasePositionAndOrientation(self.ball, list(x), [0, 0, 0, 1], **kw)
+        pb.resetBaseVelocity(self.ball, list(v), list(w), **kw)
+        return E.PybulletHook(self.ball, self.plane, client=self.client, **law)
+
+    def state(self):
+        pb, kw = self.pb, self.kw
+        v, w = pb.getBaseVelocity(self.ball, **kw)
+        return np.array(pb.getBasePositionAndOrientation(self.ball, **kw)[0]), *map(
+            np.array, (v, w)
+        )
+
+    def close(self):
+        self.pb.disconnect(self.client)
+
+
+def _matrix(q):
+    """The rotation matrix of a quaternion (w, x, y, z), by SciPy."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_quat(np.asarray(q) / np.linalg.norm(q), scalar_first=True).as_matrix()
+
+
+@pytest.fixture
+def scene(engine):
+    world = MujocoBall() if engine == "mujoco" else PybulletBall()
+    yield world
+    if engine == "pybullet":
+        world.close()
+
+
+def random_balls(n, seed):
+    rng = np.random.default_rng(seed)
+    x = np.zeros((n, 3))
+    x[:, :2] = rng.uniform(-1, 1, (n, 2))
+    x[:, 2] = RADIUS + rng.uniform(0.02, 1.0, n)
+    v = rng.uniform(-3, 3, (n, 3))
+    v[:, 2] = rng.uniform(-4, 2, n)
+    w = rng.uniform(-150, 150, (n, 3))
+    return x, v, w, rng.uniform(0, 0.8, n), rng.uniform(0.3, 0.95, n)
+
+
+def reference(x, v, w, mu, kappa, t):
+    """Velocity, spin and position at time t of a ball launched at time 0, by the closed
+    form and solve_sphere, and the contact time."""
+    tc = (v[2] + np.sqrt(v[2] ** 2 + 2 * G * (x[2] - RADIUS))) / G
+    exact = solve_sphere(BALL, v + DOWN * tc, w, mu=mu, kappa=kappa, surface=FLOOR)
+    after = t - tc
+    xc = x + v * tc + 0.5 * DOWN * tc**2
+    v1 = np.asarray(exact.after.velocity)
+    return (
+        v1 + DOWN * after,
+        np.asarray(exact.after.spin),
+        xc + v1 * after + 0.5 * DOWN * after**2,
+        tc,
+    )
+
+
+def bounce(world, x, v, w, mu, kappa, after=5):
+    """Step a launched ball through its first impact and ``after`` steps more."""
+    hook = world.launch(x, v, w, mu=mu, kappa=kappa)
+    steps, hit = 0, None
+    while hit is None or steps < hit + after:
+        out = hook.step()
+        steps += 1
+        if out.impacted and hit is None:
+            hit = steps
+            impact = out.impacts[0]
+    hook.close()
+    return steps, hit, impact, out
+
+
+@pytest.mark.slow
+def test_balls_bounce_as_the_exact_flight_and_law(scene):
+    """50 random spinning balls: after the bounce, velocity and spin agree with the
+    reference computed from the launch to 1e-9 of the speed scale (rounding is about
+    1e-15); the position carries only the engine's semi-implicit Euler error since the
+    impact step, g h^2 N / 2 after N steps, which the hook reports as its drift."""
+    h = scene.timestep
+    for x, v, w, mu, kappa in zip(*random_balls(50, seed=11), strict=True):
+        steps, hit, impact, last = bounce(scene, x, v, w, mu, kappa)
+        v_ref, w_ref, x_ref, tc = reference(x, v, w, mu, kappa, steps * h)
+        position, velocity, spin = scene.state()
+        speed = max(np.linalg.norm(v + DOWN * tc), RADIUS * np.linalg.norm(w))
+        assert np.max(np.abs(velocity - v_ref)) <= 1e-9 * speed
+        assert RADIUS * np.max(np.abs(spin - w_ref)) <= 1e-9 * speed
+        assert abs(impact.time - tc) <= 1e-12
+        euler = -0.5 * G * h * h * (steps - hit)
+        np.testing.assert_allclose(position - x_ref, [0, 0, euler], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(last.drift, [0, 0, euler], rtol=0, atol=1e-12)
+
+
+def mujoco_box(half, mass=0.5):
+    import mujoco
+
+    xml = (
+        f'<mujoco><option timestep="0.002" gravity="0 0 {-G}"/><worldbody>'
+        '<geom name="floor" type="plane" size="0 0 1"/><body name="box" pos="0 0 1">'
+        f'<freejoint/><geom type="box" size="{half[0]} {half[1]} {half[2]}" mass="{mass}"/>'
+        "</body></worldbody></mujoco>"
+    )
+    model = mujoco.MjModel.from_xml_string(xml)
+    return mujoco, model, mujoco.MjData(model)
+
+
+@pytest.mark.slow
+def test_cube_corner_impact_matches_the_rigid_body_law():
+    """A spinning cube dropped on a corner (its flight is exact: isotropic inertia keeps
+    the spin constant): the velocity and spin the engine holds after the impact step agree
+    with solve_rigid at the contact found from the launch, to 1e-9 of the speed scale."""
+    needs("mujoco")
+    from scipy.optimize import brentq
+    from scipy.spatial.transform import Rotation
+
+    a = 0.05
+    mj, model, data = mujoco_box([a, a, a])
+    corners = np.array(np.meshgrid(*[[-a, a]] * 3)).reshape(3, -1).T
+    inertia = model.body_inertia[1][0]
+    rng = np.random.default_rng(5)
+    for _ in range(8):
+        mj.mj_resetData(model, data)
+        turn = Rotation.random(random_state=rng)
+        z0, v0, w0 = rng.uniform(0.2, 0.6), rng.uniform(-2, 2, 3), rng.uniform(-30, 30, 3)
+        v0[2] = rng.uniform(-3, 1)
+        data.qpos[2], data.qpos[3:] = z0, turn.as_quat(scalar_first=True)
+        data.qvel[:3], data.qvel[3:] = v0, turn.inv().apply(w0)
+        mu, kappa = rng.uniform(0, 0.8), rng.uniform(0.3, 0.95)
+        with E.MujocoHook(model, data, "box", mu=mu, kappa=kappa) as hook:
+            steps, out = 1, hook.step()
+            while not out.impacted:
+                steps, out = steps + 1, hook.step()
+        t = steps * model.opt.timestep
+
+        def lowest(s, z0=z0, v0=v0, w0=w0, turn=turn):
+            spun = Rotation.from_rotvec(w0 * s) * turn
+            return z0 + v0[2] * s - 0.5 * G * s * s + np.min(spun.apply(corners)[:, 2])
+
+        grid = np.linspace(0, t, 400)
+        k = np.argmax([lowest(s) < 0 for s in grid])
+        tc = brentq(lowest, grid[k - 1], grid[k], xtol=1e-16, rtol=1e-15)
+        spun = Rotation.from_rotvec(w0 * tc) * turn
+        corner = spun.apply(corners)[np.argmin(spun.apply(corners)[:, 2])]
+        body = RigidBody(0.5, inertia * np.eye(3), corner)
+        exact = solve_rigid(body, v0 + DOWN * tc, w0, mu=mu, kappa=kappa, surface=FLOOR)
+        speed = max(np.linalg.norm(v0 + DOWN * tc), np.sqrt(3) * a * np.linalg.norm(w0))
+        hit = out.impacts[0]
+        assert abs(hit.time - tc) <= 1e-12
+        np.testing.assert_allclose(hit.point, [0, 0, z0] + v0 * tc + DOWN * tc**2 / 2 + corner,
+                                   rtol=0, atol=1e-12)  # fmt: skip
+        assert np.max(np.abs(hit.velocity_after - exact.velocity)) <= 1e-9 * speed
+        assert np.sqrt(3) * a * np.max(np.abs(hit.spin_after - exact.spin)) <= 1e-9 * speed
+        if len(out.impacts) == 1:  # (a second corner may strike within the same step)
+            v_end = exact.velocity + DOWN * (t - tc)
+            assert np.max(np.abs(data.qvel[:3] - v_end)) <= 1e-9 * speed
+            spin = _matrix(data.qpos[3:] / np.linalg.norm(data.qpos[3:])) @ data.qvel[3:]
+            assert np.sqrt(3) * a * np.max(np.abs(spin - exact.spin)) <= 1e-9 * speed
+
+
+def test_box_impact_is_the_rigid_law_at_the_hooks_contact():
+    """A box of three different sides, tumbling: the velocity change the hook applies is
+    solve_rigid's for the state at its contact (the inertia turned to the orientation
+    there), to rounding, and the corner leaves the plane."""
+    needs("mujoco")
+    from scipy.spatial.transform import Rotation
+
+    mj, model, data = mujoco_box([0.03, 0.05, 0.08])
+    rng = np.random.default_rng(8)
+    moments = model.body_inertia[1]
+    for _ in range(5):
+        mj.mj_resetData(model, data)
+        data.qpos[2] = 0.4
+        data.qpos[3:] = Rotation.random(random_state=rng).as_quat(scalar_first=True)
+        data.qvel[:] = rng.uniform(-10, 10, 6)
+        data.qvel[2] = -2.0
+        with E.MujocoHook(model, data, 1, mu=0.4, kappa=0.7, law="newton") as hook:
+            out = hook.step()
+            while not out.impacted:
+                out = hook.step()
+        hit = out.impacts[0]
+        turn = _matrix(hit.orientation)
+        body = RigidBody(0.5, turn @ np.diag(moments) @ turn.T, hit.point - hit.position)
+        exact = solve_rigid(body, hit.velocity_before, hit.spin_before, mu=0.4, kappa=0.7,
+                            law="newton", surface=FLOOR)  # fmt: skip
+        speed = np.linalg.norm(hit.velocity_before) + 0.1 * np.linalg.norm(hit.spin_before)
+        assert np.max(np.abs(exact.velocity - hit.velocity_after)) <= 1e-12 * speed
+        assert 0.1 * np.max(np.abs(exact.spin - hit.spin_after)) <= 1e-12 * speed
+        assert float(hit.exact.contact_after.z) > 0  # the corner leaves the plane
+        assert abs(hit.point[2]) <= 1e-12  # the contact is on the plane
+
+
+# -- where the hook is not valid, and bad input --------------------------------------------
+def test_resting_contact_is_refused_and_the_state_kept(engine):
+    """A ball resting on the floor, or arriving too slowly, is refused with a ValueError
+    before the engine steps; so is a step needing more impacts than MAX_IMPACTS."""
+    world = MujocoBall() if engine == "mujoco" else PybulletBall()
+    try:
+        for x, v, words in [
+            ([0, 0, RADIUS], [1.0, 0, 0], "resting contact"),  # rolling on the floor
+            ([0, 0, RADIUS + 1e-7], [0, 0, -1e-4], "not faster than rest_speed"),
+            ([0, 0, RADIUS - 1e-3], [0, 0, -1.0], "inside the plane"),
+        ]:
+            hook = world.launch(x, v, [0, 0, 0], mu=0.3, kappa=0.5)
+            before = world.state()
+            with pytest.raises(ValueError, match=words):
+                hook.step()
+            for kept, now in zip(before, world.state(), strict=True):
+                np.testing.assert_array_equal(kept, now)
+            hook.close()
+        hook = world.launch([0, 0, RADIUS + 1e-6], [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.0)
+        with pytest.raises(ValueError, match="resting contact"):  # kappa 0 leaves it resting
+            hook.step()
+        hook.close()
+    finally:
+        if engine == "pybullet":
+            world.close()
+
+
+def test_flat_landing_and_other_forces_are_refused():
+    """A box landing flat touches at four corners at once: refused. A force on the body
+    (here xfrc_applied) is found after the engine's step, which is then undone."""
+    needs("mujoco")
+    mj, model, data = mujoco_box([0.05, 0.05, 0.05])
+    data.qpos[2], data.qvel[2] = 0.0501, -1.0
+    with E.MujocoHook(model, data, "box", mu=0.3, kappa=0.5) as hook:
+        with pytest.raises(ValueError, match="4 points of the body touch the plane at once"):
+            hook.step()
+    mj.mj_resetData(model, data)
+    data.qvel[2] = -1.0
+    data.xfrc_applied[1, 0] = 1.0
+    qpos, qvel = data.qpos.copy(), data.qvel.copy()
+    with E.MujocoHook(model, data, "box", mu=0.3, kappa=0.5) as hook:
+        with pytest.raises(ValueError, match="xfrc_applied.*as it was before this step"):
+            hook.step()
+    np.testing.assert_array_equal(data.qpos, qpos)
+    np.testing.assert_array_equal(data.qvel, qvel)
+    assert data.time == 0.0
+
+
+def test_close_gives_the_contact_back_and_moving_the_body_resyncs():
+    needs("mujoco")
+    import mujoco
+
+    xml = (
+        '<mujoco><worldbody><geom name="floor" type="plane" size="0 0 1"/>'
+        '<body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="0.1"/></body>'
+        '<body name="cube" pos="1 0 1"><freejoint/><geom type="box" size="0.1 0.1 0.1"/>'
+        "</body></worldbody></mujoco>"
+    )
+    model = mujoco.MjModel.from_xml_string(xml)
+    data = mujoco.MjData(model)
+    bits = model.geom_contype.copy(), model.geom_conaffinity.copy()
+    hook = E.MujocoHook(model, data, "ball", mu=0.3, kappa=0.5)
+
+    def collide(a, b):
+        ct, ca = model.geom_contype, model.geom_conaffinity
+        return bool(ct[a] & ca[b] or ct[b] & ca[a])
+
+    assert not collide(0, 1) and collide(0, 2) and collide(1, 2)  # floor-ball off only
+    for _ in range(3):
+        hook.step()
+    assert hook.position[2] > data.qpos[2]  # the exact flight is above the engine's
+    data.qpos[2] = 0.5  # the user moves the ball: the hook starts again from there
+    np.testing.assert_array_equal(hook.position, data.qpos[:3])
+    hook.close()
+    np.testing.assert_array_equal(model.geom_contype, bits[0])
+    np.testing.assert_array_equal(model.geom_conaffinity, bits[1])
+    with pytest.raises(RuntimeError, match="closed"):
+        hook.step()
+
+
+def test_a_tangential_law_is_applied_to_a_ball():
+    needs("mujoco")
+    world = MujocoBall()
+    law = Walton(beta0=0.4)
+    hook = world.launch([0, 0, 0.3], [2.0, 0.0, -1.0], [0, 30.0, 0], mu=0.3, kappa=0.6,
+                        tangential=law)  # fmt: skip
+    out = hook.step()
+    while not out.impacted:
+        out = hook.step()
+    hit = out.impacts[0]
+    exact = solve_sphere(BALL, hit.velocity_before, hit.spin_before, mu=0.3, kappa=0.6,
+                         surface=FLOOR, tangential=law)  # fmt: skip
+    np.testing.assert_allclose(hit.velocity_after, exact.after.velocity, rtol=0, atol=1e-15)
+    assert type(hit.exact).__name__ == "CompliantSphereImpact"
+    _, model, data = mujoco_box([0.05, 0.05, 0.05])
+    with pytest.raises(ValueError, match="tangential applies to a sphere"):
+        E.MujocoHook(model, data, "box", mu=0.3, kappa=0.5, tangential=law)
+
+
+@pytest.mark.parametrize(
+    "change, error, message",
+    [
+        ({"mu": -0.1}, ValueError, "mu must be >= 0"),
+        ({"mu": "0.3"}, TypeError, "mu"),
+        ({"kappa": 1.5}, ValueError, r"kappa must be in \[0, 1\]"),
+        ({"kappa": [0.5, 0.6]}, ValueError, "kappa must be a single number"),
+        (
+            {"law": "hertz"},
+            ValueError,
+            "law must be one of poisson, newton, energetic; got 'hertz'",
+        ),
+        ({"law": 3}, TypeError, "law must be one of"),
+        ({"rest_speed": -1.0}, ValueError, "rest_speed must be None or a finite speed >= 0"),
+        ({"rest_speed": "fast"}, TypeError, "rest_speed must be None or a finite speed"),
+        ({"body": "nothing"}, ValueError, "body must name a body of the model, got 'nothing'"),
+        ({"body": 2.0}, TypeError, "body must be a body name or id, got 2.0"),
+        ({"body": 0}, ValueError, "body must have one free joint"),
+        ({"plane": 1}, ValueError, "plane must be a plane geom, got 1"),
+        ({"plane": 9}, ValueError, r"plane must be a plane id in \[0, 2\), got 9"),
+        ({"model": None}, TypeError, "model must be a mujoco.MjModel, got NoneType"),
+        ({"data": "d"}, TypeError, "data must be a mujoco.MjData, got str"),
+    ],
+)
+def test_bad_mujoco_input_is_named(change, error, message):
+    needs("mujoco")
+    model, data = mujoco_ball()
+    args = {"model": model, "data": data, "body": "ball", "mu": 0.3, "kappa": 0.5, **change}
+    with pytest.raises(error, match=message):
+        E.MujocoHook(args.pop("model"), args.pop("data"), args.pop("body"), **args)
+
+
+def test_mujoco_shapes_and_pairs_the_hook_cannot_take():
+    needs("mujoco")
+    import mujoco
+
+    def model(body, contact=""):
+        xml = (
+            '<mujoco><worldbody><geom name="floor" type="plane" size="0 0 1"/>'
+            f'<geom name="wall" type="plane" size="0 0 1" zaxis="1 0 0"/>{body}'
+            f"</worldbody>{contact}</mujoco>"
+        )
+        m = mujoco.MjModel.from_xml_string(xml)
+        return m, mujoco.MjData(m)
+
+    ball = '<body name="b" pos="0 0 1"><freejoint/><geom name="g" type="sphere" size="0.1"/></body>'
+    m, d = model(ball)
+    with pytest.raises(ValueError, match="plane must be given: the model has 2 plane geoms"):
+        E.MujocoHook(m, d, "b", mu=0.3, kappa=0.5)
+    m, d = model(ball, '<contact><pair geom1="floor" geom2="g"/></contact>')
+    with pytest.raises(ValueError, match="explicit contact <pair>"):
+        E.MujocoHook(m, d, "b", mu=0.3, kappa=0.5, plane="floor")
+    m, d = model('<body name="b"><freejoint/><geom type="ellipsoid" size="0.1 0.2 0.3"/></body>')
+    with pytest.raises(ValueError, match="sphere, capsule and box geoms.*ELLIPSOID"):
+        E.MujocoHook(m, d, "b", mu=0.3, kappa=0.5, plane="floor")
+    m, d = model('<body name="b"><freejoint/><geom type="sphere" size="0.1" pos="0.1 0 0"/>'
+                 '<geom type="sphere" size="0.1" pos="0 0 0" mass="0"/></body>')  # fmt: skip
+    with pytest.raises(ValueError, match="centre of mass at its frame's origin"):
+        E.MujocoHook(m, d, "b", mu=0.3, kappa=0.5, plane="floor")
+
+
+def test_bad_pybullet_input_is_named():
+    needs("pybullet")
+    world = PybulletBall()
+    try:
+        with pytest.raises(TypeError, match="body must be a PyBullet body id"):
+            E.PybulletHook(1.5, world.plane, mu=0.3, kappa=0.5, client=world.client)
+        with pytest.raises(ValueError, match="body must be a body of client"):
+            E.PybulletHook(99, world.plane, mu=0.3, kappa=0.5, client=world.client)
+        with pytest.raises(ValueError, match="body must have a sphere or box shape, got shape"):
+            E.PybulletHook(world.plane, world.ball, mu=0.3, kappa=0.5, client=world.client)
+        shape = world.pb.createCollisionShape(world.pb.GEOM_SPHERE, radius=0.1, **world.kw)
+        other = world.pb.createMultiBody(1.0, shape, basePosition=[5, 0, 1], **world.kw)
+        with pytest.raises(ValueError, match="plane must be a body whose one collision shape"):
+            E.PybulletHook(world.ball, other, mu=0.3, kappa=0.5, client=world.client)
+        with pytest.raises(ValueError, match="client must be a connected PyBullet client"):
+            E.PybulletHook(world.ball, world.plane, mu=0.3, kappa=0.5, client=world.client + 7)
+        with pytest.raises(ValueError, match="mu must be >= 0"):
+            E.PybulletHook(world.ball, world.plane, mu=-1, kappa=0.5, client=world.client)
+        pb, kw = world.pb, world.kw
+        pb.changeDynamics(world.ball, -1, linearDamping=0.04, **kw)  # Bullet's default
+        hook = world.launch([0, 0, 1.0], [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5)
+        with pytest.raises(ValueError, match="velocity changed by more than gravity"):
+            hook.step()
+    finally:
+        world.close()
