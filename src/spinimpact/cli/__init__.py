@@ -18,6 +18,7 @@ import numpy as np
 
 from ._common import DEFAULTS, errors_to_exit_2
 from .batch import batch_command
+from .engines import engines_command
 from .explore import explore_command
 from .fit import fit_command
 from .flight import flight_command
@@ -59,6 +60,7 @@ for _command in (
     track_command,
     problems_command,
     explore_command,
+    engines_command,
 ):
     cli.add_command(_command)
 

@@ -65,12 +65,15 @@ References
 
 from __future__ import annotations
 
+from .calibrate import Calibration, calibrate, calibration_cases
 from .common import CONFIGURATIONS, ENGINES, EngineRun, available, standard_cases
 from .compare import bounce
+from .configure import MUJOCO_SETTINGS, PYBULLET_SETTINGS
 from .hook import HookImpact, HookStep
 from .hook_mujoco import MujocoHook
 from .hook_pybullet import PybulletHook
 from .pybullet import PYBULLET_DEFAULTS
+from .restitution import RestitutionCurve, restitution_curve, restitution_settings
 
 #: Modules the docstring examples need (tests/test_docs.py skips them without).
 __doctest_requires__ = ENGINES
@@ -86,5 +89,13 @@ __all__ = [
     "PybulletHook",
     "available",
     "bounce",
+    "Calibration",
+    "calibrate",
+    "calibration_cases",
+    "MUJOCO_SETTINGS",
+    "PYBULLET_SETTINGS",
+    "RestitutionCurve",
+    "restitution_curve",
+    "restitution_settings",
     "standard_cases",
 ]
