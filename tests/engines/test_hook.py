@@ -1,171 +1,46 @@
 """spinimpact.engines.MujocoHook and PybulletHook: exact impacts inside the engines' loops.
 
-The reference is computed here from the launch state alone, without the hook's code:
-the closed-form parabola to the contact (a root of the centre's height for a ball, of
-the lowest corner's for a turning cube, by SciPy's brentq), the law
-(:func:`spinimpact.solve_sphere`, :func:`spinimpact.solve_rigid`) and the parabola after.
+The reference is computed from the launch state alone, without the hook's code
+(``benchmarks/engine_hook.py``, which runs the same comparison on 1,000 balls): the
+closed-form parabola to the contact (a root of the centre's height for a ball, of the
+lowest corner's for a turning cube, by SciPy's brentq), the law (:func:`spinimpact.solve_sphere`,
+:func:`spinimpact.solve_rigid`) and the parabola after.
 """
 
 import numpy as np
 import pytest
+from benchmarks.engine_hook import (
+    BALL,
+    DOWN,
+    FLOOR,
+    HALF,
+    RADIUS,
+    SCENES,
+    G,
+    ball_reference,
+    cube_reference,
+    random_launches,
+    rotation,
+    through_impact,
+)
 
-from spinimpact import Body, RigidBody, Surface, Walton, solve_rigid, solve_sphere
+from spinimpact import RigidBody, Walton, solve_rigid, solve_sphere
 from spinimpact import engines as E
 
 from .bodies import needs
 
-RADIUS, MASS, G = 0.1, 1.0, 9.81
-FLOOR = Surface(normal=(0.0, 0.0, 1.0))
-DOWN = np.array([0.0, 0.0, -G])
-BALL = Body(mass=MASS, radius=RADIUS, gyration=RADIUS * np.sqrt(0.4))
 
-
-def mujoco_ball(timestep=0.002):
+def mujoco_ball():
     import mujoco
 
     xml = (
-        f'<mujoco><option timestep="{timestep}" gravity="0 0 {-G}"/><worldbody>'
+        f'<mujoco><option gravity="0 0 {-G}"/><worldbody>'
         '<geom name="floor" type="plane" size="0 0 1"/>'
-        f'<body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="{RADIUS}" '
-        f'mass="{MASS}"/></body></worldbody></mujoco>'
+        f'<body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="{RADIUS}"/>'
+        "</body></worldbody></mujoco>"
     )
     model = mujoco.MjModel.from_xml_string(xml)
     return model, mujoco.MjData(model)
-
-
-class MujocoBall:
-    """One MuJoCo model, relaunched for every ball."""
-
-    def __init__(self):
-        import mujoco
-
-        self.mj = mujoco
-        self.model, self.data = mujoco_ball()
-        self.timestep = self.model.opt.timestep
-
-    def launch(self, x, v, w, **law):
-        self.mj.mj_resetData(self.model, self.data)
-        d = self.data
-        d.qpos[:3], d.qvel[:3], d.qvel[3:] = x, v, w  # unrotated: body frame = world
-        return E.MujocoHook(self.model, self.data, "ball", **law)
-
-    def state(self):
-        d = self.data
-        q = d.qpos[3:] / np.linalg.norm(d.qpos[3:])
-        return d.qpos[:3].copy(), d.qvel[:3].copy(), _matrix(q) @ d.qvel[3:]
-
-
-class PybulletBall:
-    """One PyBullet world with gravity, its ball relaunched for every case."""
-
-    def __init__(self):
-        import pybullet as pb
-
-        self.pb = pb
-        self.client = pb.connect(pb.DIRECT)
-        kw = self.kw = {"physicsClientId": self.client}
-        self.timestep = 1.0 / 240.0
-        pb.setGravity(0, 0, -G, **kw)
-        pb.setTimeStep(self.timestep, **kw)
-        self.plane = pb.createMultiBody(0, pb.createCollisionShape(pb.GEOM_PLANE, **kw), **kw)
-        shape = pb.createCollisionShape(pb.GEOM_SPHERE, radius=RADIUS, **kw)
-        self.ball = pb.createMultiBody(MASS, shape, basePosition=[0, 0, 1], **kw)
-        pb.changeDynamics(
-            self.ball, -1, linearDamping=0.0, angularDamping=0.0, maxJointVelocity=1e30,
-            localInertiaDiagonal=[0.4 * MASS * RADIUS**2] * 3, **kw,
-        )  # fmt: skip
-
-    def launch(self, x, v, w, **law):
-        pb, kw = self.pb, self.kw
-        pb.resetBasePositionAndOrientation(self.ball, list(x), [0, 0, 0, 1], **kw)
-        pb.resetBaseVelocity(self.ball, list(v), list(w), **kw)
-        return E.PybulletHook(self.ball, self.plane, client=self.client, **law)
-
-    def state(self):
-        pb, kw = self.pb, self.kw
-        v, w = pb.getBaseVelocity(self.ball, **kw)
-        return np.array(pb.getBasePositionAndOrientation(self.ball, **kw)[0]), *map(
-            np.array, (v, w)
-        )
-
-    def close(self):
-        self.pb.disconnect(self.client)
-
-
-def _matrix(q):
-    """The rotation matrix of a quaternion (w, x, y, z), by SciPy."""
-    from scipy.spatial.transform import Rotation
-
-    return Rotation.from_quat(np.asarray(q) / np.linalg.norm(q), scalar_first=True).as_matrix()
-
-
-@pytest.fixture
-def scene(engine):
-    world = MujocoBall() if engine == "mujoco" else PybulletBall()
-    yield world
-    if engine == "pybullet":
-        world.close()
-
-
-def random_balls(n, seed):
-    rng = np.random.default_rng(seed)
-    x = np.zeros((n, 3))
-    x[:, :2] = rng.uniform(-1, 1, (n, 2))
-    x[:, 2] = RADIUS + rng.uniform(0.02, 1.0, n)
-    v = rng.uniform(-3, 3, (n, 3))
-    v[:, 2] = rng.uniform(-4, 2, n)
-    w = rng.uniform(-150, 150, (n, 3))
-    return x, v, w, rng.uniform(0, 0.8, n), rng.uniform(0.3, 0.95, n)
-
-
-def reference(x, v, w, mu, kappa, t):
-    """Velocity, spin and position at time t of a ball launched at time 0, by the closed
-    form and solve_sphere, and the contact time."""
-    tc = (v[2] + np.sqrt(v[2] ** 2 + 2 * G * (x[2] - RADIUS))) / G
-    exact = solve_sphere(BALL, v + DOWN * tc, w, mu=mu, kappa=kappa, surface=FLOOR)
-    after = t - tc
-    xc = x + v * tc + 0.5 * DOWN * tc**2
-    v1 = np.asarray(exact.after.velocity)
-    return (
-        v1 + DOWN * after,
-        np.asarray(exact.after.spin),
-        xc + v1 * after + 0.5 * DOWN * after**2,
-        tc,
-    )
-
-
-def bounce(world, x, v, w, mu, kappa, after=5):
-    """Step a launched ball through its first impact and ``after`` steps more."""
-    hook = world.launch(x, v, w, mu=mu, kappa=kappa)
-    steps, hit = 0, None
-    while hit is None or steps < hit + after:
-        out = hook.step()
-        steps += 1
-        if out.impacted and hit is None:
-            hit = steps
-            impact = out.impacts[0]
-    hook.close()
-    return steps, hit, impact, out
-
-
-@pytest.mark.slow
-def test_balls_bounce_as_the_exact_flight_and_law(scene):
-    """50 random spinning balls: after the bounce, velocity and spin agree with the
-    reference computed from the launch to 1e-9 of the speed scale (rounding is about
-    1e-15); the position carries only the engine's semi-implicit Euler error since the
-    impact step, g h^2 N / 2 after N steps, which the hook reports as its drift."""
-    h = scene.timestep
-    for x, v, w, mu, kappa in zip(*random_balls(50, seed=11), strict=True):
-        steps, hit, impact, last = bounce(scene, x, v, w, mu, kappa)
-        v_ref, w_ref, x_ref, tc = reference(x, v, w, mu, kappa, steps * h)
-        position, velocity, spin = scene.state()
-        speed = max(np.linalg.norm(v + DOWN * tc), RADIUS * np.linalg.norm(w))
-        assert np.max(np.abs(velocity - v_ref)) <= 1e-9 * speed
-        assert RADIUS * np.max(np.abs(spin - w_ref)) <= 1e-9 * speed
-        assert abs(impact.time - tc) <= 1e-12
-        euler = -0.5 * G * h * h * (steps - hit)
-        np.testing.assert_allclose(position - x_ref, [0, 0, euler], rtol=0, atol=1e-12)
-        np.testing.assert_allclose(last.drift, [0, 0, euler], rtol=0, atol=1e-12)
 
 
 def mujoco_box(half, mass=0.5):
@@ -181,57 +56,64 @@ def mujoco_box(half, mass=0.5):
     return mujoco, model, mujoco.MjData(model)
 
 
+@pytest.fixture
+def ball(engine):
+    world = SCENES[engine]()
+    yield world
+    world.close()
+
+
+@pytest.fixture
+def cube(engine):
+    world = SCENES[engine]("cube")
+    yield world
+    world.close()
+
+
+UPRIGHT = [1.0, 0.0, 0.0, 0.0]
+
+
 @pytest.mark.slow
-def test_cube_corner_impact_matches_the_rigid_body_law():
-    """A spinning cube dropped on a corner (its flight is exact: isotropic inertia keeps
-    the spin constant): the velocity and spin the engine holds after the impact step agree
-    with solve_rigid at the contact found from the launch, to 1e-9 of the speed scale."""
-    needs("mujoco")
-    from scipy.optimize import brentq
-    from scipy.spatial.transform import Rotation
+def test_balls_bounce_as_the_exact_flight_and_law(ball):
+    """50 random spinning balls: after the bounce, velocity and spin agree with the
+    reference computed from the launch to 1e-9 of the speed scale (rounding is about
+    1e-15); the position carries only the engine's semi-implicit Euler error since the
+    impact step, g h^2 N / 2 after N steps, which the hook reports as its drift."""
+    h = ball.timestep
+    cases = random_launches(50, seed=11)
+    cases[0][:, 2] += RADIUS
+    for launch in zip(*cases, strict=True):
+        steps, hit, first, last, _ = through_impact(ball, launch, after=5)
+        x, _, v, w, mu, kappa = launch
+        v_ref, w_ref, x_ref, tc, speed = ball_reference(x, v, w, mu, kappa, steps * h)
+        position, velocity, spin = ball.state()
+        assert np.max(np.abs(velocity - v_ref)) <= 1e-9 * speed
+        assert RADIUS * np.max(np.abs(spin - w_ref)) <= 1e-9 * speed
+        assert abs(first.impacts[0].time - tc) <= 1e-12
+        euler = -0.5 * G * h * h * (steps - hit)
+        np.testing.assert_allclose(position - x_ref, [0, 0, euler], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(last.drift, [0, 0, euler], rtol=0, atol=1e-12)
 
-    a = 0.05
-    mj, model, data = mujoco_box([a, a, a])
-    corners = np.array(np.meshgrid(*[[-a, a]] * 3)).reshape(3, -1).T
-    inertia = model.body_inertia[1][0]
-    rng = np.random.default_rng(5)
-    for _ in range(8):
-        mj.mj_resetData(model, data)
-        turn = Rotation.random(random_state=rng)
-        z0, v0, w0 = rng.uniform(0.2, 0.6), rng.uniform(-2, 2, 3), rng.uniform(-30, 30, 3)
-        v0[2] = rng.uniform(-3, 1)
-        data.qpos[2], data.qpos[3:] = z0, turn.as_quat(scalar_first=True)
-        data.qvel[:3], data.qvel[3:] = v0, turn.inv().apply(w0)
-        mu, kappa = rng.uniform(0, 0.8), rng.uniform(0.3, 0.95)
-        with E.MujocoHook(model, data, "box", mu=mu, kappa=kappa) as hook:
-            steps, out = 1, hook.step()
-            while not out.impacted:
-                steps, out = steps + 1, hook.step()
-        t = steps * model.opt.timestep
 
-        def lowest(s, z0=z0, v0=v0, w0=w0, turn=turn):
-            spun = Rotation.from_rotvec(w0 * s) * turn
-            return z0 + v0[2] * s - 0.5 * G * s * s + np.min(spun.apply(corners)[:, 2])
-
-        grid = np.linspace(0, t, 400)
-        k = np.argmax([lowest(s) < 0 for s in grid])
-        tc = brentq(lowest, grid[k - 1], grid[k], xtol=1e-16, rtol=1e-15)
-        spun = Rotation.from_rotvec(w0 * tc) * turn
-        corner = spun.apply(corners)[np.argmin(spun.apply(corners)[:, 2])]
-        body = RigidBody(0.5, inertia * np.eye(3), corner)
-        exact = solve_rigid(body, v0 + DOWN * tc, w0, mu=mu, kappa=kappa, surface=FLOOR)
-        speed = max(np.linalg.norm(v0 + DOWN * tc), np.sqrt(3) * a * np.linalg.norm(w0))
-        hit = out.impacts[0]
+@pytest.mark.slow
+def test_cube_corner_impact_matches_the_rigid_body_law(cube):
+    """Spinning cubes dropped on a corner (their flight is exact: isotropic inertia keeps
+    the spin constant): the contact instant and point, and the velocity and spin after
+    the impact, agree with solve_rigid at the contact found from the launch, to 1e-9 of
+    the speed scale; so does the state the engine holds after a step of one impact."""
+    for launch in zip(*random_launches(8, seed=5, height=(0.15, 0.6), spin=30.0), strict=True):
+        steps, _, first, _, _ = through_impact(cube, launch, after=0)
+        t = steps * cube.timestep
+        tc, point, v1, w1, speed = cube_reference(*launch, t)
+        hit = first.impacts[0]
         assert abs(hit.time - tc) <= 1e-12
-        np.testing.assert_allclose(hit.point, [0, 0, z0] + v0 * tc + DOWN * tc**2 / 2 + corner,
-                                   rtol=0, atol=1e-12)  # fmt: skip
-        assert np.max(np.abs(hit.velocity_after - exact.velocity)) <= 1e-9 * speed
-        assert np.sqrt(3) * a * np.max(np.abs(hit.spin_after - exact.spin)) <= 1e-9 * speed
-        if len(out.impacts) == 1:  # (a second corner may strike within the same step)
-            v_end = exact.velocity + DOWN * (t - tc)
-            assert np.max(np.abs(data.qvel[:3] - v_end)) <= 1e-9 * speed
-            spin = _matrix(data.qpos[3:] / np.linalg.norm(data.qpos[3:])) @ data.qvel[3:]
-            assert np.sqrt(3) * a * np.max(np.abs(spin - exact.spin)) <= 1e-9 * speed
+        np.testing.assert_allclose(hit.point, point, rtol=0, atol=1e-12)
+        assert np.max(np.abs(hit.velocity_after - v1)) <= 1e-9 * speed
+        assert np.sqrt(3) * HALF * np.max(np.abs(hit.spin_after - w1)) <= 1e-9 * speed
+        if len(first.impacts) == 1:  # (a second corner may strike within the same step)
+            _, velocity, spin = cube.state()
+            assert np.max(np.abs(velocity - (v1 + DOWN * (t - tc)))) <= 1e-9 * speed
+            assert np.sqrt(3) * HALF * np.max(np.abs(spin - w1)) <= 1e-9 * speed
 
 
 def test_box_impact_is_the_rigid_law_at_the_hooks_contact():
@@ -255,7 +137,7 @@ def test_box_impact_is_the_rigid_law_at_the_hooks_contact():
             while not out.impacted:
                 out = hook.step()
         hit = out.impacts[0]
-        turn = _matrix(hit.orientation)
+        turn = rotation(hit.orientation)
         body = RigidBody(0.5, turn @ np.diag(moments) @ turn.T, hit.point - hit.position)
         exact = solve_rigid(body, hit.velocity_before, hit.spin_before, mu=0.4, kappa=0.7,
                             law="newton", surface=FLOOR)  # fmt: skip
@@ -267,30 +149,25 @@ def test_box_impact_is_the_rigid_law_at_the_hooks_contact():
 
 
 # -- where the hook is not valid, and bad input --------------------------------------------
-def test_resting_contact_is_refused_and_the_state_kept(engine):
+def test_resting_contact_is_refused_and_the_state_kept(ball):
     """A ball resting on the floor, or arriving too slowly, is refused with a ValueError
-    before the engine steps; so is a step needing more impacts than MAX_IMPACTS."""
-    world = MujocoBall() if engine == "mujoco" else PybulletBall()
-    try:
-        for x, v, words in [
-            ([0, 0, RADIUS], [1.0, 0, 0], "resting contact"),  # rolling on the floor
-            ([0, 0, RADIUS + 1e-7], [0, 0, -1e-4], "not faster than rest_speed"),
-            ([0, 0, RADIUS - 1e-3], [0, 0, -1.0], "inside the plane"),
-        ]:
-            hook = world.launch(x, v, [0, 0, 0], mu=0.3, kappa=0.5)
-            before = world.state()
-            with pytest.raises(ValueError, match=words):
-                hook.step()
-            for kept, now in zip(before, world.state(), strict=True):
-                np.testing.assert_array_equal(kept, now)
-            hook.close()
-        hook = world.launch([0, 0, RADIUS + 1e-6], [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.0)
-        with pytest.raises(ValueError, match="resting contact"):  # kappa 0 leaves it resting
+    before the engine steps; kappa = 0 leaves a ball resting after its impact: refused."""
+    for x, v, words in [
+        ([0, 0, RADIUS], [1.0, 0, 0], "resting contact"),  # rolling on the floor
+        ([0, 0, RADIUS + 1e-7], [0, 0, -1e-4], "not faster than rest_speed"),
+        ([0, 0, RADIUS - 1e-3], [0, 0, -1.0], "inside the plane"),
+    ]:
+        hook = ball.launch(x, UPRIGHT, v, [0, 0, 0], mu=0.3, kappa=0.5)
+        before = ball.state()
+        with pytest.raises(ValueError, match=words):
             hook.step()
+        for kept, now in zip(before, ball.state(), strict=True):
+            np.testing.assert_array_equal(kept, now)
         hook.close()
-    finally:
-        if engine == "pybullet":
-            world.close()
+    hook = ball.launch([0, 0, RADIUS + 1e-6], UPRIGHT, [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0)
+    with pytest.raises(ValueError, match="resting contact"):
+        hook.step()
+    hook.close()
 
 
 def test_flat_landing_and_other_forces_are_refused():
@@ -348,10 +225,10 @@ def test_close_gives_the_contact_back_and_moving_the_body_resyncs():
 
 def test_a_tangential_law_is_applied_to_a_ball():
     needs("mujoco")
-    world = MujocoBall()
+    world = SCENES["mujoco"]()
     law = Walton(beta0=0.4)
-    hook = world.launch([0, 0, 0.3], [2.0, 0.0, -1.0], [0, 30.0, 0], mu=0.3, kappa=0.6,
-                        tangential=law)  # fmt: skip
+    hook = world.launch([0, 0, 0.3], UPRIGHT, [2.0, 0.0, -1.0], [0, 30.0, 0], mu=0.3,
+                        kappa=0.6, tangential=law)  # fmt: skip
     out = hook.step()
     while not out.impacted:
         out = hook.step()
@@ -428,25 +305,25 @@ def test_mujoco_shapes_and_pairs_the_hook_cannot_take():
 
 def test_bad_pybullet_input_is_named():
     needs("pybullet")
-    world = PybulletBall()
+    world = SCENES["pybullet"]()
     try:
         with pytest.raises(TypeError, match="body must be a PyBullet body id"):
             E.PybulletHook(1.5, world.plane, mu=0.3, kappa=0.5, client=world.client)
         with pytest.raises(ValueError, match="body must be a body of client"):
             E.PybulletHook(99, world.plane, mu=0.3, kappa=0.5, client=world.client)
         with pytest.raises(ValueError, match="body must have a sphere or box shape, got shape"):
-            E.PybulletHook(world.plane, world.ball, mu=0.3, kappa=0.5, client=world.client)
+            E.PybulletHook(world.plane, world.body, mu=0.3, kappa=0.5, client=world.client)
         shape = world.pb.createCollisionShape(world.pb.GEOM_SPHERE, radius=0.1, **world.kw)
         other = world.pb.createMultiBody(1.0, shape, basePosition=[5, 0, 1], **world.kw)
         with pytest.raises(ValueError, match="plane must be a body whose one collision shape"):
-            E.PybulletHook(world.ball, other, mu=0.3, kappa=0.5, client=world.client)
+            E.PybulletHook(world.body, other, mu=0.3, kappa=0.5, client=world.client)
         with pytest.raises(ValueError, match="client must be a connected PyBullet client"):
-            E.PybulletHook(world.ball, world.plane, mu=0.3, kappa=0.5, client=world.client + 7)
+            E.PybulletHook(world.body, world.plane, mu=0.3, kappa=0.5, client=world.client + 7)
         with pytest.raises(ValueError, match="mu must be >= 0"):
-            E.PybulletHook(world.ball, world.plane, mu=-1, kappa=0.5, client=world.client)
+            E.PybulletHook(world.body, world.plane, mu=-1, kappa=0.5, client=world.client)
         pb, kw = world.pb, world.kw
-        pb.changeDynamics(world.ball, -1, linearDamping=0.04, **kw)  # Bullet's default
-        hook = world.launch([0, 0, 1.0], [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5)
+        pb.changeDynamics(world.body, -1, linearDamping=0.04, **kw)  # Bullet's default
+        hook = world.launch([0, 0, 1.0], UPRIGHT, [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5)
         with pytest.raises(ValueError, match="velocity changed by more than gravity"):
             hook.step()
     finally:

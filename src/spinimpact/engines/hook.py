@@ -21,16 +21,17 @@ exact flight by ``g h t / 2`` after ``t`` seconds of flight with steps of ``h``.
 hook therefore keeps the exact position of the centre of mass beside the engine's,
 from the engine's velocities, and finds each contact on the exact flight; the engine's
 own position keeps its integration error between impacts (reported by
-:attr:`HookStep.drift`), and is set to the exact one at every impact. If anything else
-moves the body between two steps (the user sets its position), the hook takes the
-engine's position as the exact one from there.
+:attr:`HookStep.drift <spinimpact.engines.HookStep.drift>`), and is set to the exact one
+at every impact. If anything else moves the body between two steps (the user sets its
+position), the hook takes the engine's position as the exact one from there.
 
 Where the hook is not valid it refuses, with a ``ValueError`` that leaves the engine's
 state as it was before the step:
 
 * a body already inside the plane, or resting on it: an impact whose contact point
   approaches at ``rest_speed`` or slower (by default the speed gravity gives in one
-  step), or a body that would need more than :data:`MAX_IMPACTS` impacts in one step;
+  step), or a body that would need more than
+  :data:`~spinimpact.engines.hook.MAX_IMPACTS` impacts in one step;
 * several points touching at once (an edge or a face landing flat): the law is for one
   contact point;
 * any force but gravity on the body during a step (a contact with another body, an
@@ -90,7 +91,7 @@ class HookImpact:
 
 @dataclass(frozen=True, eq=False)
 class HookStep:
-    """What one :meth:`step` of a hook did."""
+    """What one :meth:`~spinimpact.engines.hook.Hook.step` of a hook did."""
 
     impacts: tuple[HookImpact, ...]  #: the impacts applied within the step, in order
     time: float  #: the engine's clock after the step, s
@@ -415,7 +416,8 @@ class Hook:
     @property
     def position(self) -> np.ndarray:
         """The exact flight's centre of mass now (m): the engine's own position, less its
-        integration error since the last impact (:attr:`HookStep.drift`)."""
+        integration error since the last impact
+        (:attr:`HookStep.drift <spinimpact.engines.HookStep.drift>`)."""
         x = self._read()[0]
         if self._engine is not None and np.array_equal(x, self._engine):
             return self._exact.copy()

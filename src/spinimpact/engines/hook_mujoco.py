@@ -1,13 +1,14 @@
-"""The impact hook in MuJoCo: :class:`MujocoHook`, a drop-in for ``mujoco.mj_step``.
+"""The impact hook in MuJoCo: :class:`~spinimpact.engines.MujocoHook`, for ``mj_step``.
 
 The hook reads the body and the plane from the user's ``MjModel``: the body's free joint,
 its collision geoms (spheres, capsules and boxes), its mass and principal inertia, and a
 plane geom of the world body (MuJoCo's planes are infinite for collisions). While the hook
 is open, the engine's own contact between this body and this plane is switched off through
 the geoms' ``contype``/``conaffinity`` bits (the plane moves to a bit of its own, which
-every other geom that collided with it gains in its ``conaffinity``); :meth:`close` puts
-the bits back. Contacts of the body with anything else stay the engine's, and the hook
-refuses a step in which one acts (see :mod:`spinimpact.engines.hook`).
+every other geom that collided with it gains in its ``conaffinity``);
+:meth:`~spinimpact.engines.hook.Hook.close` puts the bits back. Contacts of the body
+with anything else stay the engine's, and the hook refuses a step in which one acts (see
+:mod:`spinimpact.engines.hook`).
 """
 
 from __future__ import annotations
@@ -40,9 +41,10 @@ def _index(mj, model, kind: str, obj: Any, value: Any) -> int:
 class MujocoHook(Hook):
     """Exact impacts of one free body on one plane, inside a MuJoCo model's own loop.
 
-    Call :meth:`step` where the loop called ``mujoco.mj_step(model, data)``: it takes the
-    same step, and where the body reaches the plane within it, applies the exact impact at
-    the contact instant (see :mod:`spinimpact.engines.hook`).
+    Call :meth:`~spinimpact.engines.hook.Hook.step` where the loop called
+    ``mujoco.mj_step(model, data)``: it takes the same step, and where the body reaches
+    the plane within it, applies the exact impact at the contact instant (see
+    :mod:`spinimpact.engines.hook`).
 
     Parameters
     ----------

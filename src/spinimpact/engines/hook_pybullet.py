@@ -1,17 +1,18 @@
-"""The impact hook in PyBullet: :class:`PybulletHook`, a drop-in for ``stepSimulation``.
+"""The impact hook in PyBullet: :class:`~spinimpact.engines.PybulletHook`, for ``stepSimulation``.
 
 The hook reads the body and the plane from the user's PyBullet world: a body without
 links whose collision shape is a sphere or a box, centred on its centre of mass, its
 mass and inertia (``getDynamicsInfo``), and a plane body (``GEOM_PLANE``). While the hook
 is open, the engine's contact between the two is switched off with
-``setCollisionFilterPair``; :meth:`close` switches it back on. The state is written with
-``resetBasePositionAndOrientation`` and ``resetBaseVelocity``.
+``setCollisionFilterPair``; :meth:`~spinimpact.engines.hook.Hook.close` switches it back
+on. The state is written with ``resetBasePositionAndOrientation`` and ``resetBaseVelocity``.
 
 Bullet applies linear and angular damping to a body by default (0.04): the hook refuses
 a step in which the body's velocity changed by anything but gravity, so set both to 0
 with ``changeDynamics`` (and lift ``maxJointVelocity``, 100 by default, above the body's
-speeds). PyBullet keeps no clock: :attr:`HookStep.time` and :attr:`HookImpact.time`
-count from the hook's creation.
+speeds). PyBullet keeps no clock: the times of
+:class:`~spinimpact.engines.HookStep` and :class:`~spinimpact.engines.HookImpact` count
+from the hook's creation.
 """
 
 from __future__ import annotations
@@ -41,9 +42,10 @@ def _id(name: str, value: Any) -> int:
 class PybulletHook(Hook):
     """Exact impacts of one body on one plane, inside a PyBullet world's own loop.
 
-    Call :meth:`step` where the loop called ``pybullet.stepSimulation()``: it takes the
-    same step, and where the body reaches the plane within it, applies the exact impact at
-    the contact instant (see :mod:`spinimpact.engines.hook`).
+    Call :meth:`~spinimpact.engines.hook.Hook.step` where the loop called
+    ``pybullet.stepSimulation()``: it takes the same step, and where the body reaches the
+    plane within it, applies the exact impact at the contact instant (see
+    :mod:`spinimpact.engines.hook`).
 
     Parameters
     ----------
