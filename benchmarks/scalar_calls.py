@@ -27,6 +27,7 @@ from benchmarks.bench import python_rebound  # the paper's rebound in plain Pyth
 from benchmarks.one_impact import python_sphere  # a sphere on a plane, in plain Python
 from spinimpact import (
     Body,
+    MindlinDeresiewicz,
     Pendulum,
     PlanarBody,
     Stronge,
@@ -109,9 +110,9 @@ def python_walton(vx, vy, omega, m, r, z, mu, k, beta0):
 
 
 def python_stronge(contact, vx, vy, omega, m, r, z, mu, k, ratio):
-    """Stronge's law for one of the paper's bodies: the slip after from the law's own
-    per-contact function (``contact``: it has no closed form while the contact sticks),
-    the rest in plain Python."""
+    """Stronge's law (or micro-slip) for one of the paper's bodies: the slip after from the
+    law's own per-contact function (``contact``: neither has a closed form while the contact
+    sticks; micro-slip's is the table read, compiled), the rest in plain Python."""
     u = vx + r * omega
     u1 = contact(u, vy, z, mu, k, ratio)[0]
     f1 = m * (u1 - u) / z
@@ -136,6 +137,8 @@ def cases() -> list[tuple[str, object, object, object]]:
     rod = PlanarBody.rod(mass=1.0, length=0.5, angle=0.7)
     p = Pendulum.rod(mass=1.0, length=1.0, angle=1.0)
     walton, stronge = Walton(0.35), Stronge(poisson_ratio=0.23)
+    micro = MindlinDeresiewicz(poisson_ratio=0.23)
+    from spinimpact.core.mdr_table_kernel import contact_one
     from spinimpact.core.scalar_tangential import stronge_contact
 
     rows = [
@@ -164,6 +167,11 @@ def cases() -> list[tuple[str, object, object, object]]:
          lambda: solve(ball, np.array([1.0]), -1.0, 0.0, mu=0.5, kappa=0.8, tangential=stronge),
          lambda: python_stronge(stronge_contact, 1.0, -1.0, 0.0, m, r, z, 0.5, 0.8,
                                 stronge.stiffness_ratio)),
+        ("solve(..., tangential=MindlinDeresiewicz(poisson_ratio=0.23)), from its table",
+         lambda: solve(ball, 1.0, -1.0, 0.0, mu=0.5, kappa=0.9, tangential=micro),
+         lambda: solve(ball, np.array([1.0]), -1.0, 0.0, mu=0.5, kappa=0.9, tangential=micro),
+         lambda: python_stronge(contact_one, 1.0, -1.0, 0.0, m, r, z, 0.5, 0.9,
+                                micro.stiffness_ratio)),
     ]  # fmt: skip
     for name, call, call_one, closed in rows:
         res, res_one, ref = call(), call_one(), closed()

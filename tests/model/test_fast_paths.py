@@ -10,6 +10,7 @@ import pytest
 
 from spinimpact import (
     Body,
+    MindlinDeresiewicz,
     Pendulum,
     PlanarBody,
     Stronge,
@@ -120,6 +121,35 @@ def test_tangential_laws_plain_and_one_element(law, monkeypatch):
         kw[name] = _one(kw[name], i)
         assert check(monkeypatch, solve, body, **kw, tangential=law).shape == SHAPES[i % 3]
     assert len(seen) >= (1 if law.frictionless else 4)
+
+
+def test_micro_slip_from_the_table_plain_and_one_element(monkeypatch):
+    from tests.core.test_law_mdr import _cases
+
+    law = MindlinDeresiewicz(poisson_ratio=0.23)
+    c = _cases(100, law.stiffness_ratio, seed=103)
+    seen = set()
+    for i in range(100):
+        body, kw = _paper_inputs(c, i)
+        seen.add(str(check(monkeypatch, solve, body, **kw, tangential=law).regime))
+        name = ("vx", "vy", "omega", "mu", "kappa")[i % 5]
+        kw[name] = _one(kw[name], i)
+        assert check(monkeypatch, solve, body, **kw, tangential=law).shape == SHAPES[i % 3]
+    assert len(seen) == 5
+
+
+def test_micro_slip_outside_the_table_takes_the_array_path(monkeypatch):
+    taken = []
+    hook = _fast_tangential.plane_impact
+    monkeypatch.setattr(_fast_tangential, "plane_impact",
+                        lambda *a: taken.append(hook(*a)) or taken[-1])  # fmt: skip
+    law = MindlinDeresiewicz(poisson_ratio=0.23)
+    inside = check(monkeypatch, solve, BALL, 1.0, -2.0, 0.0, mu=0.3, kappa=0.9, tangential=law)
+    outside = check(monkeypatch, solve, BALL, 1.0, -2.0, 0.0, mu=0.3, kappa=0.7, tangential=law)
+    assert taken[0] is not None and taken[1] is None
+    assert inside.regime == outside.regime == "slip-reversal"
+    fine = MindlinDeresiewicz(poisson_ratio=0.23, springs=128)  # not the table's resolution
+    assert fine._on_floats() is None and law._on_floats() is not None
 
 
 def test_tangential_law_subclasses_and_other_laws_take_the_array_path():
@@ -333,6 +363,8 @@ def test_plain_numbers_and_one_element_arrays_take_the_scalar_paths(monkeypatch)
         (solve, (BALL,), PAPER), (solve, (BALL,), PAPER | dict(vx=one)),
         (solve, (BALL,), PAPER | dict(tangential=Walton(0.3), kappa=one)),
         (solve, (BALL,), PAPER | dict(tangential=Stronge(poisson_ratio=0.3))),
+        (solve, (BALL,), PAPER | dict(tangential=MindlinDeresiewicz(poisson_ratio=0.3),
+                                      kappa=np.array([0.9]))),
         (solve_sphere, (BALL,), SPHERE), (solve_sphere, (BALL,), SPHERE | dict(mu=one)),
         (solve_pair, (BALL, BALL), PAIR), (solve_pair, (BALL, BALL), PAIR | dict(mu=one)),
         (solve_planar, (ROD,), PAPER), (solve_planar, (ROD,), PAPER | dict(omega=one)),

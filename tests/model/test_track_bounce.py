@@ -121,7 +121,7 @@ def test_bad_input_is_refused_naming_the_track(two_shots):
         fit_bounces([early])
     with pytest.raises(TypeError, match="tracks must be Track objects"):
         fit_bounces([(track.time, track.position)])
-    with pytest.raises(ValueError, match="law must be one of rigid, walton"):
+    with pytest.raises(ValueError, match="law must be one of rigid, walton, mindlin-deresiewicz"):
         fit_bounces([track], law="stronge")
     with pytest.raises(ValueError, match="fixed names an unknown parameter 'beta0'"):
         fit_bounces([track], fixed={"beta0": 0.1})
@@ -130,3 +130,26 @@ def test_bad_input_is_refused_naming_the_track(two_shots):
     flat = as_track(track.time, track.position * [1, 1, 0] + [0, 0, 2.0], name="high")
     with pytest.raises(ValueError, match="track high: the incoming flight does not reach"):
         predict_bounce(flat, {**TRUE, "contact_height": -50.0})
+
+
+@pytest.mark.slow  # a joint fit of three shots: about 20 s
+def test_micro_slip_bounces_are_fitted_through_the_table():
+    from spinimpact import MindlinDeresiewicz
+
+    nu = 0.25  # a thin shell: zeta r = 2.5 * 0.857 = 2.14, inside the table
+    rng = np.random.default_rng(5)
+    shots = [shot(rng, before=0.3, after=0.15, name=f"micro {i}",
+                  tangential=MindlinDeresiewicz(poisson_ratio=nu)) for i in range(3)]  # fmt: skip
+    f = fit_bounces([t for t, _ in shots], law="mindlin-deresiewicz", sigma=0.0015,
+                    intervals=False)  # fmt: skip
+    assert f.names == ("mu", "kappa", "contact_height", "poisson_ratio")
+    for name, truth in TRUE.items() | {("poisson_ratio", nu)}:
+        z = (f[name] - truth) / f.standard_error[name]
+        assert abs(z) < 4.0, (name, f[name], f.standard_error[name])
+    for s, (_, truth) in zip(f.shots, shots, strict=True):
+        np.testing.assert_allclose(s.spin_after, truth["after_spin"],
+                                   atol=0.15 * np.linalg.norm(truth["after_spin"]))  # fmt: skip
+    # the prediction from the incoming samples flies the same law
+    track, truth = shots[0]
+    p = predict_bounce(track.select(track.time < truth["contact_time"] - 0.01), f)
+    assert abs(p.contact_time - truth["contact_time"]) < 2e-3

@@ -30,8 +30,10 @@ def to_track(v: np.ndarray) -> np.ndarray:
 
 def shot(rng: np.random.Generator, *, mu: float = 0.2, kappa: float = 0.88, beta0=None,
          sigma: float = 0.0015, before: float = 0.25, after: float = 0.2, outliers: int = 2,
-         gaps: int = 2, spin=None, name: str = "synthetic"):  # fmt: skip
+         gaps: int = 2, spin=None, name: str = "synthetic", tangential=None):  # fmt: skip
     """One shot: the track, and the truth (state at t = 0 in the track's frame, contact).
+
+    The bounce is rigid, Walton's with ``beta0`` or under the law ``tangential``.
 
     Returns
     -------
@@ -48,7 +50,7 @@ def shot(rng: np.random.Generator, *, mu: float = 0.2, kappa: float = 0.88, beta
     y0 = BALL.radius - vy * before + 0.5 * g * before**2
     w = np.array(spin if spin is not None else [rng.normal(0, 20), rng.normal(0, 30),
                                                 rng.uniform(150.0, 300.0)])  # fmt: skip
-    law = None if beta0 is None else Walton(beta0)
+    law = tangential if tangential is not None else (None if beta0 is None else Walton(beta0))
     f = flight(BALL, Ground("synthetic", mu, kappa), velocity=[vx, vy, vz], spin=w,
                position=[0.0, y0, 0.0], max_bounces=2, t_stop=before + after + 0.3, dt=1e-3,
                path=True, tangential=law)  # fmt: skip

@@ -46,7 +46,8 @@ def _vec(v: np.ndarray, unit: str, digits: int = 3) -> str:
 @click.option("--tangential", type=click.Choice(LAWS), default="walton", show_default=True,
               help=_help("tangential", "The bounce law fitted."))  # fmt: skip
 @click.option("--fix", multiple=True, metavar="NAME=VALUE",
-              help=_help("fix", "mu, kappa, contact_height (m), beta0 or lift_slope; "
+              help=_help("fix", "mu, kappa, contact_height (m), beta0 (walton), "
+                         "poisson_ratio (mindlin-deresiewicz) or lift_slope; "
                          "repeatable."))  # fmt: skip
 @click.option("--free-lift", is_flag=True, help=_help("free-lift"))
 @click.option("--up", type=click.Choice(["z", "y"]), default="z", show_default=True,

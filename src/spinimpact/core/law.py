@@ -52,6 +52,13 @@ of ``rebound`` then ``beta0`` or ``stiffness_ratio``; ``vx+, vy+, omega+, f1``),
 ``sphere_rebound`` then the law's parameter), ``walton_contact`` (``slip_after, stuck``) and
 ``stronge_contact`` (``slip_after, stuck, transitions``) on the seam.
 
+Micro-slip (:mod:`spinimpact.core.scalar_mdr`; ``solve(...,
+tangential=MindlinDeresiewicz(...))`` where the precomputed table holds): ``mdr_rebound``,
+``sphere_mdr_rebound`` (arguments of ``walton_rebound`` / ``sphere_walton_rebound`` with
+Mindlin's ``stiffness_ratio``, then the table), ``mdr_contact`` (``slip_after, stuck``),
+``mdr_usable`` (whether the table holds for the impact; the others return NaN where it does
+not) and ``mdr_table()`` (the table's arrays, the last argument of each).
+
 Planar bodies touching off their centre (:mod:`spinimpact.core.scalar_planar`, the coupled
 collision matrix): ``planar_rebound`` (a free body), ``planar_process`` (any ``W``: a
 pendulum's too), ``planar_state_at``, ``planar_work``, ``planar_min_energy_impulse``.
@@ -59,10 +66,11 @@ pendulum's too), ``planar_state_at``, ``planar_work``, ``planar_min_energy_impul
 
 from __future__ import annotations
 
-from . import impulse, kinematics, scalar, scalar3d, scalar_planar, scalar_stronge
+from . import impulse, kinematics, scalar, scalar3d, scalar_mdr, scalar_planar, scalar_stronge
 from . import scalar_tangential as tangential
 from .scalar import *  # noqa: F403 - the law's public names
 from .scalar3d import *  # noqa: F403
+from .scalar_mdr import *  # noqa: F403
 from .scalar_planar import *  # noqa: F403
 from .scalar_tangential import *  # noqa: F403
 
@@ -72,6 +80,7 @@ __all__ = [
     *scalar3d.__all__,
     *scalar_planar.__all__,
     *tangential.__all__,
+    *scalar_mdr.__all__,
 ]
 
 #: Functions of the array modules written for floats and arrays alike (operators only), which
@@ -101,7 +110,7 @@ def _functions(module):
 
 
 if HAVE_NUMBA:  # pragma: no branch
-    for _m in (scalar, scalar3d, scalar_planar, scalar_stronge, tangential):
+    for _m in (scalar, scalar3d, scalar_planar, scalar_stronge, tangential, scalar_mdr):
         for _f in _functions(_m):
             register_jitable(_f)
     for _f in _SHARED:

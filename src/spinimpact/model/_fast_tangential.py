@@ -1,5 +1,6 @@
 """One impact under a tangential law in microseconds: the scalar path of
-``solve(..., tangential=Walton(...))`` and ``tangential=Stronge(...)``.
+``solve(..., tangential=Walton(...))``, ``tangential=Stronge(...)`` and
+``tangential=MindlinDeresiewicz(...)`` where its table holds.
 
 As :mod:`spinimpact.model._fast` does for the rigid law: when ``vx, vy, omega, mu, kappa``
 are plain numbers (or arrays of one element) and the body's numbers are floats,
@@ -70,7 +71,10 @@ def plane_impact(rule: Any, parameter: float, kinds: tuple, body: Any, vx: Any, 
     ----------
     rule : callable
         The law on the seam, ``rule(slip, vy, zeta, mu, kappa, parameter)`` returning
-        ``(slip_after, stuck, ...)`` (``walton_contact``, ``stronge_contact``).
+        ``(slip_after, stuck, ...)`` (``walton_contact``, ``stronge_contact``, the micro-slip
+        table's ``mdr_contact``); a NaN ``slip_after`` from a finite slip means the rule
+        cannot answer this impact on floats (outside the micro-slip table), and the array
+        path runs.
     parameter : float
         Its parameter (``beta0``, ``stiffness_ratio``).
     kinds : tuple
@@ -89,6 +93,8 @@ def plane_impact(rule: Any, parameter: float, kinds: tuple, body: Any, vx: Any, 
     slip = slip_velocity(vx_, om_, r)
     out = rule(slip, vy_, z, mu_, k, parameter)
     slip1, stuck = out[0], out[1]
+    if math.isnan(slip1) and not math.isnan(slip):  # the rule cannot answer on floats here
+        return None
     f1 = tangential.tangential_impulse_of(m, z, slip, slip1)
     vx1, om1 = tangential.impulse_to_body(vx_, om_, m, r, z, f1)
     vy1 = impulse.rebound_normal_velocity(vy_, k)

@@ -32,6 +32,8 @@ import numpy as np
 from .._validation import check, scalar, whole
 from ..core import compliance as kernels
 from ..core import mdr, mdr_table
+from ..core.scalar_mdr import mdr_contact
+from ..core.scalar_mdr import mdr_table as mdr_scalar_table
 from ..core.scalar_tangential import stronge_contact, walton_contact
 from . import _fast_tangential
 from .body import Body
@@ -110,14 +112,22 @@ class TangentialLaw:
 
     def _solve_plane(self, body: Any, vx: Any, vy: Any, omega: Any, *, mu: Any,
                      kappa: Any) -> CompliantImpact:  # fmt: skip
-        scalar = _SCALAR.get(type(self))  # the law on floats, and its parameter's name
+        scalar = self._on_floats()  # the law on floats, and its parameter
         if scalar is not None and isinstance(body, Body):
             one = _fast_tangential.plane_impact(
-                scalar[0], getattr(self, scalar[1]), (CompliantImpact, State), body, vx, vy,
-                omega, mu, kappa, self.frictionless, self)  # fmt: skip
+                scalar[0], scalar[1], (CompliantImpact, State), body, vx, vy, omega, mu, kappa,
+                self.frictionless, self)  # fmt: skip
             if one is not None:  # one impact of plain numbers: the same result, in microseconds
                 return one
         return solve_compliant(self, body, vx, vy, omega, mu=mu, kappa=kappa)
+
+    def _on_floats(self) -> tuple | None:
+        """``(rule, parameter)``: the law's per-contact function on floats,
+        ``rule(slip, vy, zeta, mu, kappa, parameter) -> (slip_after, stuck, ...)``, for the
+        scalar path of one impact; ``None`` where there is none (a subclass may change
+        ``rebound_slip``)."""
+        scalar = _SCALAR.get(type(self))
+        return None if scalar is None else (scalar[0], getattr(self, scalar[1]))
 
     def _solve_sphere(self, body: Any, velocity: Any, spin: Any, *, mu: Any, kappa: Any,
                       surface: Any = None) -> CompliantSphereImpact:  # fmt: skip
@@ -309,6 +319,15 @@ class MindlinDeresiewicz(TangentialLaw):
         return solver(slip, vy, zeta, mu, kappa, self.stiffness_ratio, springs=self.springs,
                       steps=self.steps)  # fmt: skip
 
+    def _on_floats(self) -> tuple | None:
+        """The table's impact on floats (:func:`_table_contact`) where this law reads the
+        table (the default method and resolution); ``None`` otherwise."""
+        table = mdr_table.load_table()
+        if (type(self) is not MindlinDeresiewicz or self.method != "table"
+                or (self.springs, self.steps) != (table.springs, table.steps)):  # fmt: skip
+            return None
+        return _table_contact, self.stiffness_ratio
+
     def __repr__(self) -> str:
         which = ("poisson_ratio", self.poisson_ratio)
         if self.poisson_ratio is None:
@@ -321,6 +340,18 @@ class MindlinDeresiewicz(TangentialLaw):
         if self.method != "table":
             extra += f", method={self.method!r}"
         return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
+
+
+def _table_contact(slip: float, vy: float, zeta: float, mu: float, kappa: float,
+                   ratio: float) -> tuple:  # fmt: skip
+    """:func:`spinimpact.core.scalar_mdr.mdr_contact` with the shipped table: compiled where
+    Numba is installed (a few microseconds), else on floats in Python; ``(nan, False)``
+    outside the table's range and bound."""
+    from ..core import mdr_table_kernel  # imported here: Numba is heavy, and optional
+
+    if mdr_table_kernel.HAVE_NUMBA:
+        return mdr_table_kernel.contact_one(slip, vy, zeta, mu, kappa, ratio)
+    return mdr_contact(slip, vy, zeta, mu, kappa, ratio, mdr_scalar_table())
 
 
 #: The laws whose one impact of plain numbers takes the scalar path

@@ -5,7 +5,8 @@ once: each ball's state before the bounce (position, velocity, spin, drag coeffi
 flown to the surface (:func:`to_surface`, whose last step is
 :func:`spinimpact.core.flight.integrate_to_ground`: the contact located to the integrator's
 precision), bounced by the exact 3D law of :func:`spinimpact.solve_sphere`
-(:func:`spinimpact.core.ground.ground_bounce`; rigid, or with Walton's tangential restitution)
+(:func:`spinimpact.core.ground.ground_bounce`; rigid, with Walton's tangential restitution, or
+with Mindlin-Deresiewicz micro-slip read from its table, :mod:`spinimpact.core.mdr_table`)
 and flown on (:func:`spinimpact.model.track.fly_to`). The fits of
 :mod:`spinimpact.model.track_fit` and the predictions of :mod:`spinimpact.model.track_predict`
 are built on it. Every ball of a call is flown in one batch: the loops run over time steps.
@@ -18,23 +19,36 @@ from typing import Any
 
 import numpy as np
 
-from ..core.compliance import walton_slip
+from ..core.compliance import mindlin_stiffness_ratio, walton_slip
 from ..core.flight import integrate_to_ground, rk4_step
 from ..core.ground import GroundBounce, ground_bounce
+from ..core.mdr_table import table_slip
 from .track import MAX_STEP, Air, fly_to, frame_rotation
 
-__all__ = ["flights", "to_surface", "AtContact", "LAWS", "BOUNDS", "CONTACT"]
+__all__ = ["flights", "to_surface", "AtContact", "LAWS", "LAW_PARAMETERS", "BOUNDS", "CONTACT",
+           "shared_names"]  # fmt: skip
 
-LAWS = ("rigid", "walton")
+#: The bounce laws and the shared parameters each adds to ``mu``, ``kappa`` and
+#: ``contact_height``: Walton's tangential restitution of sticking impacts, and Poisson's ratio
+#: of the ball (on a rigid table) for micro-slip (Mindlin's ``4 G*/E* = 2(1 - nu)/(2 - nu)``).
+LAW_PARAMETERS = {"rigid": (), "walton": ("beta0",), "mindlin-deresiewicz": ("poisson_ratio",)}
+LAWS = tuple(LAW_PARAMETERS)
 #: Each shared parameter's range.
 BOUNDS = {"mu": (0.0, 10.0), "kappa": (0.0, 1.0), "beta0": (-1.0, 1.0),
-          "contact_height": (-np.inf, np.inf), "lift_slope": (0.0, 5.0)}  # fmt: skip
+          "poisson_ratio": (-0.99, 0.5), "contact_height": (-np.inf, np.inf),
+          "lift_slope": (0.0, 5.0)}  # fmt: skip
 STEP = np.r_[np.full(3, 1e-6), np.full(3, 1e-5), np.full(3, 1e-2), 1e-4]
 SCALE = np.r_[np.full(3, 1e-3), np.full(3, 1e-2), np.full(3, 30.0), 0.05]
-SHARED_STEP = {"mu": 1e-5, "kappa": 1e-5, "beta0": 1e-5, "contact_height": 1e-6,
-               "lift_slope": 1e-5}  # fmt: skip
-SHARED_SCALE = {"mu": 0.05, "kappa": 0.05, "beta0": 0.1, "contact_height": 1e-3,
-                "lift_slope": 0.1}  # fmt: skip
+SHARED_STEP = {"mu": 1e-5, "kappa": 1e-5, "beta0": 1e-5, "poisson_ratio": 1e-5,
+               "contact_height": 1e-6, "lift_slope": 1e-5}  # fmt: skip
+SHARED_SCALE = {"mu": 0.05, "kappa": 0.05, "beta0": 0.1, "poisson_ratio": 0.1,
+                "contact_height": 1e-3, "lift_slope": 0.1}  # fmt: skip
+
+
+def shared_names(law: str) -> tuple[str, ...]:
+    """The shared parameters of a fit under ``law``: ``mu``, ``kappa``, ``contact_height``
+    and the law's own (:data:`LAW_PARAMETERS`)."""
+    return ("mu", "kappa", "contact_height") + LAW_PARAMETERS[law]
 
 
 #: What :func:`flights` gives at each contact, besides its time.
@@ -55,10 +69,26 @@ class AtContact:
     spin_after: np.ndarray  #: rad/s
 
 
-def _rebound(law: str, beta0: np.ndarray | None) -> Any:
+def _rebound(law: str, shared: dict[str, np.ndarray]) -> Any:
+    """The law's ``rebound_slip`` for :func:`~spinimpact.core.ground.ground_bounce`
+    (``None``: the rigid law), with the law's parameter of each ball."""
     if law == "rigid":
         return None
-    return lambda slip, vy, zeta, mu, kappa: walton_slip(slip, vy, zeta, mu, kappa, beta0)
+    if law == "walton":
+        beta0 = shared["beta0"]
+        return lambda slip, vy, zeta, mu, kappa: walton_slip(slip, vy, zeta, mu, kappa, beta0)
+    nu = np.asarray(shared["poisson_ratio"], dtype=float)
+
+    def micro_slip(slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
+        rows = np.broadcast_arrays(slip, vy, mu, kappa, nu)
+        out, stuck = np.empty(rows[0].shape), np.empty(rows[0].shape, dtype=bool)
+        for value in np.unique(nu):  # one stiffness ratio a call (a fit shares one)
+            i = rows[4] == value
+            out[i], stuck[i] = table_slip(rows[0][i], rows[1][i], zeta, rows[2][i], rows[3][i],
+                                          float(mindlin_stiffness_ratio(value)))  # fmt: skip
+        return out, stuck
+
+    return micro_slip
 
 
 def to_surface(t0: np.ndarray, p: np.ndarray, v: np.ndarray, w: np.ndarray, aero: Any,
@@ -124,9 +154,10 @@ def flights(t0: np.ndarray, states: np.ndarray, shared: dict[str, np.ndarray], a
     states : ndarray, shape (b, 10)
         Position (m), velocity (m/s), spin (rad/s) and ``C_D``, in the tracks' frame.
     shared : dict
-        ``mu``, ``kappa``, ``contact_height`` (m) and, for Walton, ``beta0``: arrays ``(b,)``.
+        ``mu``, ``kappa``, ``contact_height`` (m) and the law's parameter (Walton's ``beta0``,
+        micro-slip's ``poisson_ratio``): arrays ``(b,)``.
     air : Air
-    law : {"rigid", "walton"}
+    law : {"rigid", "walton", "mindlin-deresiewicz"}
     before, after : ndarray, shape (b, m1) and (b, m2)
         s, the times flown before and after the bounce (``m1`` or ``m2`` may be 0).
     up : str
@@ -174,13 +205,12 @@ def flights(t0: np.ndarray, states: np.ndarray, shared: dict[str, np.ndarray], a
                      else np.zeros((b, 0, 3)))  # fmt: skip
     c = to_surface(t0, p, v, w, aero, radius)
     hit = c["hit"]
-    beta0 = shared.get("beta0")
     vc = np.where(hit[:, None], c["velocity"], 0.0)
     wc = np.where(hit[:, None], c["spin"], 0.0)
     if rebound is None:
         bounce = ground_bounce(vc, wc, mass=ball.mass, radius=radius, inertia=body.inertia,
                                zeta=body.zeta, mu=shared["mu"], kappa=shared["kappa"],
-                               rebound_slip=_rebound(law, beta0))  # fmt: skip
+                               rebound_slip=_rebound(law, shared))  # fmt: skip
     else:
         v1, w1 = rebound(vc @ rot, wc @ rot)
         bounce = GroundBounce(np.asarray(v1) @ rot.T, np.asarray(w1) @ rot.T, None, None)

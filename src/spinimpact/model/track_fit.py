@@ -3,10 +3,12 @@ r"""Tracks across a bounce fitted: the incoming and outgoing flights joined by t
 A track that crosses a level surface holds two flights. :func:`fit_bounces` fits them jointly:
 each shot's state before the bounce (position, velocity, spin and drag coefficient at its
 first sample) is flown to the surface, bounced by the exact 3D law of
-:func:`spinimpact.solve_sphere` (rigid, or with Walton's tangential restitution) and flown on
+:func:`spinimpact.solve_sphere` (rigid, with Walton's tangential restitution or with
+micro-slip) and flown on
 (:func:`spinimpact.model.track_bounce.flights`). The spin after the bounce is therefore the
 law's prediction, and the outgoing positions test it. Several shots share the surface's
-``mu`` and ``kappa``, Walton's ``beta0`` and the height of the ball's centre at contact
+``mu`` and ``kappa``, the law's own parameter (Walton's ``beta0``, micro-slip's Poisson
+ratio) and the height of the ball's centre at contact
 (``contact_height``, in the tracks' frame): one fit over many shots, with standard errors and
 profile-likelihood intervals as :func:`spinimpact.fit` gives them.
 
@@ -38,7 +40,7 @@ from .track_arc import (
     fit_arc,
     identify,
 )
-from .track_bounce import BOUNDS, CONTACT, LAWS, AtContact, flights, padded
+from .track_bounce import BOUNDS, CONTACT, LAWS, AtContact, flights, padded, shared_names
 from .track_joint import Joint, profile
 
 __all__ = ["BounceFit", "Shot", "fit_bounces", "MIN_CHECK"]
@@ -109,9 +111,10 @@ class BounceFit:
     Attributes
     ----------
     law : str
-        ``rigid`` or ``walton``.
+        ``rigid``, ``walton`` or ``mindlin-deresiewicz``.
     names : tuple of str
-        Every shared parameter (``mu``, ``kappa``, ``contact_height``, ``beta0`` for Walton).
+        Every shared parameter (``mu``, ``kappa``, ``contact_height``; ``beta0`` for Walton,
+        ``poisson_ratio`` for micro-slip).
     values : dict
         Each shared parameter's value (fitted or fixed).
     free : tuple of str
@@ -263,9 +266,13 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
         The ball (mass, radius, inertia, lift law; its ``C_D`` only starts each shot's own).
     surface : Ground or str
         Starting ``mu`` and ``kappa`` (or their values, when fixed).
-    law : {"rigid", "walton"}
-        The bounce law: rigid contact with Coulomb friction, or Walton's tangential
-        restitution (``beta0`` shared, starting at 0).
+    law : {"rigid", "walton", "mindlin-deresiewicz"}
+        The bounce law: rigid contact with Coulomb friction, Walton's tangential
+        restitution (``beta0`` shared, starting at 0), or Hertz-Mindlin-Deresiewicz
+        micro-slip (``poisson_ratio`` of the ball on a rigid table shared, starting at 0.3;
+        ``kappa`` must stay above 0): read from its table
+        (:mod:`spinimpact.core.mdr_table`) where ``kappa >= 0.85`` and ``nu <= 1/3`` for a
+        thin shell, solved in time elsewhere (tens of milliseconds for each ``kappa`` tried).
     fixed : dict, optional
         Shared parameters held at given values (``{"contact_height": 0.759}``).
     free_lift : bool
@@ -311,7 +318,7 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
     if not 0 < confidence < 1:
         raise ValueError(f"confidence must be in (0, 1), got {confidence!r}")
     ball_, ground_ = as_ball(ball), as_ground(surface)
-    names = ("mu", "kappa", "contact_height") + (("beta0",) if law == "walton" else ())
+    names = shared_names(law)
     names += ("lift_slope",) if free_lift or "lift_slope" in (fixed or {}) else ()
     fixed = dict(fixed or {})
     for n, v in fixed.items():
@@ -337,7 +344,7 @@ def fit_bounces(tracks: Any, ball: Ball | str = "table-tennis", surface: Ground 
         raise ValueError("the tracks' frames differ (up = " + ", ".join(sorted(ups)) + ")")
     init = {"mu": ground_.mu, "kappa": ground_.kappa, "contact_height": float(np.median(heights)),
             "lift_slope": ball_.lift_slope,
-            "beta0": 0.0}  # fmt: skip
+            "beta0": 0.0, "poisson_ratio": 0.3}  # fmt: skip
     prob = Joint(tracks, splits, air, law, names, {n: float(v) for n, v in fixed.items()},
                   ups.pop())  # fmt: skip
     x0 = np.r_[[init[n] for n in prob.free], np.concatenate(starts)]

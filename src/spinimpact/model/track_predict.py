@@ -20,7 +20,7 @@ from .presets import Ball
 from .presets import ball as as_ball
 from .track import Air, Track, plain
 from .track_arc import ArcFit, fit_arc
-from .track_bounce import CONTACT, SHARED_STEP, STEP, AtContact, flights
+from .track_bounce import CONTACT, SHARED_STEP, STEP, AtContact, flights, shared_names
 from .track_fit import BounceFit
 
 __all__ = ["Prediction", "predict_bounce"]
@@ -84,7 +84,8 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
         The incoming samples (those after ``until``, if given, are left out).
     shared : BounceFit or dict
         The surface's and ball's shared parameters (``mu``, ``kappa``, ``contact_height``,
-        ``beta0`` for Walton): a :func:`fit_bounces` result (its covariance then widens the
+        the law's own: ``beta0`` for Walton, ``poisson_ratio`` for micro-slip): a
+        :func:`fit_bounces` result (its covariance then widens the
         band) or plain values.
     ball, law, air_density, gravity
         Taken from ``shared`` when it is a :class:`BounceFit`; otherwise ``table-tennis``,
@@ -133,7 +134,7 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
         values, cov_names, cov_shared = dict(shared), [], np.zeros((0, 0))
     else:
         raise TypeError(f"shared must be a BounceFit or a dict of values, got {shared!r}")
-    names = ("mu", "kappa", "contact_height") + (("beta0",) if law_ == "walton" else ())
+    names = shared_names(law_)
     missing = [n for n in names if n not in values]
     if missing:
         raise ValueError(f"shared values missing: {', '.join(missing)}")
