@@ -211,13 +211,13 @@ def balls(engine: str, n: int, seed: int = 1) -> dict:
     """``n`` random spinning balls through their bounce: errors and timings."""
     scene = SCENES[engine]()
     h = scene.timestep
-    rows = {"error": [], "drift": [], "euler": [], "flight_s": [], "impact_s": []}
+    rows = {"error": [], "drift": [], "euler": [], "flight_s": [], "impact_s": [], "law_s": []}
     try:
         cases = random_launches(n, seed)
         cases[0][:, 2] += RADIUS
         after = np.random.default_rng(seed + 1).integers(1, 20, n)
         for k, launch in enumerate(zip(*cases, strict=True)):
-            steps, hit, _, last, timings = through_impact(scene, launch, int(after[k]))
+            steps, hit, first, _, timings = through_impact(scene, launch, int(after[k]))
             x, _, v, w, mu, kappa = launch
             v_ref, w_ref, x_ref, _, speed = ball_reference(x, v, w, mu, kappa, steps * h)
             position, velocity, spin = scene.state()
@@ -227,6 +227,11 @@ def balls(engine: str, n: int, seed: int = 1) -> dict:
             rows["euler"].append(abs(position[2] - x_ref[2] + 0.5 * G * h * h * (steps - hit)))
             rows["flight_s"] += [t for t, hit_now in timings if not hit_now]
             rows["impact_s"] += [t for t, hit_now in timings if hit_now]
+            hit_state = first.impacts[0]
+            start = time.perf_counter()
+            solve_sphere(BALL, hit_state.velocity_before, hit_state.spin_before, mu=mu,
+                         kappa=kappa, surface=FLOOR)  # fmt: skip
+            rows["law_s"].append(time.perf_counter() - start)
     finally:
         scene.close()
     return {k: np.array(v) for k, v in rows.items()}
@@ -235,7 +240,7 @@ def balls(engine: str, n: int, seed: int = 1) -> dict:
 def cubes(engine: str, n: int, seed: int = 2) -> dict:
     """``n`` spinning cubes dropped on a corner: the first impact against the reference."""
     scene = SCENES[engine]("cube")
-    rows = {"error": [], "time": [], "point": [], "impact_s": [], "two": 0}
+    rows = {"error": [], "time": [], "point": [], "impact_s": [], "law_s": [], "two": 0}
     try:
         for launch in zip(*random_launches(n, seed, height=(0.15, 0.6), spin=30.0), strict=True):
             steps, _, first, _, timings = through_impact(scene, launch, 0)
@@ -248,14 +253,20 @@ def cubes(engine: str, n: int, seed: int = 2) -> dict:
             rows["point"].append(np.max(np.abs(hit.point - point)))
             rows["impact_s"] += [t for t, hit_now in timings if hit_now]
             rows["two"] += len(first.impacts) > 1
+            body = RigidBody(CUBE_MASS, CUBE_INERTIA * np.eye(3), hit.point - hit.position)
+            start = time.perf_counter()
+            solve_rigid(body, hit.velocity_before, hit.spin_before, mu=launch[4],
+                        kappa=launch[5], surface=FLOOR)  # fmt: skip
+            rows["law_s"].append(time.perf_counter() - start)
     finally:
         scene.close()
     return {k: np.array(v) for k, v in rows.items()}
 
 
-def engine_step_seconds(engine: str, steps: int = 20_000, repeat: int = 5) -> float:
+def engine_step_seconds(engine: str, steps: int = 20_000, repeat: int = 5) -> tuple:
     """The engine's own step of the ball scene, in flight far above the floor, s (best of
-    ``repeat`` runs)."""
+    ``repeat`` runs), and for PyBullet the cost of saving and dropping its world (the hook
+    saves it before a step with an impact), s (best of 50)."""
     scene = SCENES[engine]()
     try:
         scene.launch([0, 0, 1e6], [1, 0, 0, 0], [0, 0, 0], [0, 0, 0], mu=0.3, kappa=0.5).close()
@@ -265,9 +276,18 @@ def engine_step_seconds(engine: str, steps: int = 20_000, repeat: int = 5) -> fl
             for _ in range(steps):
                 scene.engine_step()
             best = min(best, (time.perf_counter() - start) / steps)
+        save = np.nan
+        if engine == "pybullet":
+            pb, kw = scene.pb, scene.kw
+            runs = []
+            for _ in range(50):
+                start = time.perf_counter()
+                pb.removeState(pb.saveState(**kw), **kw)
+                runs.append(time.perf_counter() - start)
+            save = min(runs)
     finally:
         scene.close()
-    return best
+    return best, save
 
 
 def main(argv=None) -> None:
@@ -279,7 +299,7 @@ def main(argv=None) -> None:
         if not E.available(engine):
             print(f"{engine}: not installed, skipped")
             continue
-        step = engine_step_seconds(engine)
+        step, save = engine_step_seconds(engine)
         b = balls(engine, args.balls)
         c = cubes(engine, args.cubes)
         print(f"\n{engine} (time step {SCENES[engine]().timestep:g} s)")
@@ -294,11 +314,15 @@ def main(argv=None) -> None:
               f"max {c['time'].max():.2e} s; contact point max {c['point'].max():.2e} m; "
               f"{int(c['two'])} steps held a second corner impact")  # fmt: skip
         flight, impact = np.median(b["flight_s"]), np.median(b["impact_s"])
-        cube = np.median(c["impact_s"])
-        print(f"  cost: the engine's step {step * 1e6:.1f} us; the hook's step without an "
-              f"impact {flight * 1e6:.1f} us ({flight / step:.1f} x the engine's step), "
-              f"with a ball's impact {impact * 1e6:.1f} us ({impact / step:.1f} x), with a "
-              f"cube's {cube * 1e6:.0f} us ({cube / step:.0f} x) (medians)")  # fmt: skip
+        cube, ball_law, cube_law = (np.median(a) for a in (c["impact_s"], b["law_s"], c["law_s"]))
+        print(f"  cost (medians): the engine's step {step * 1e6:.1f} us; the hook's step "
+              f"without an impact {flight * 1e6:.1f} us ({flight / step:.1f} x the engine's "
+              f"step); with a ball's impact {impact * 1e6:.0f} us ({impact / step:.0f} x), of "
+              f"which solve_sphere {ball_law * 1e6:.0f} us; with a cube's {cube * 1e3:.2f} ms "
+              f"({cube / step:.0f} x), of which solve_rigid {cube_law * 1e3:.2f} ms")  # fmt: skip
+        if engine == "pybullet":
+            print(f"  (a step with an impact saves PyBullet's world first: "
+                  f"{save * 1e6:.0f} us, {save / step:.0f} x the engine's step)")  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -184,11 +184,24 @@ def test_flat_landing_and_other_forces_are_refused():
     data.xfrc_applied[1, 0] = 1.0
     qpos, qvel = data.qpos.copy(), data.qvel.copy()
     with E.MujocoHook(model, data, "box", mu=0.3, kappa=0.5) as hook:
-        with pytest.raises(ValueError, match="xfrc_applied.*as it was before this step"):
+        with pytest.raises(
+            ValueError, match="force other than gravity.*as it was before this step"
+        ):
             hook.step()
     np.testing.assert_array_equal(data.qpos, qpos)
     np.testing.assert_array_equal(data.qvel, qvel)
     assert data.time == 0.0
+    import mujoco
+
+    two = mujoco.MjModel.from_xml_string(
+        '<mujoco><worldbody><geom type="plane" size="0 0 1"/>'
+        '<body name="ball" pos="0 0 1"><freejoint/><geom type="sphere" size="0.1"/></body>'
+        '<body pos="0 0 1.19"><freejoint/><geom type="sphere" size="0.1"/></body>'
+        "</worldbody></mujoco>"
+    )  # two balls overlapping by 1 cm
+    with E.MujocoHook(two, mujoco.MjData(two), "ball", mu=0.3, kappa=0.5) as hook:
+        with pytest.raises(ValueError, match="constraint force .a contact with another body"):
+            hook.step()
 
 
 def test_close_gives_the_contact_back_and_moving_the_body_resyncs():
@@ -328,3 +341,41 @@ def test_bad_pybullet_input_is_named():
             hook.step()
     finally:
         world.close()
+
+
+def test_capsule_end_impact_is_the_rigid_law():
+    """A tumbling capsule lands on one of its round ends: the contact point lies a radius
+    below that end's centre, on the plane, and the impact is solve_rigid's there."""
+    needs("mujoco")
+    import mujoco
+    from scipy.spatial.transform import Rotation
+
+    model = mujoco.MjModel.from_xml_string(
+        f'<mujoco><option gravity="0 0 {-G}"/><worldbody><geom type="plane" size="0 0 1"/>'
+        '<body name="pill" pos="0 0 0.5"><freejoint/>'
+        '<geom type="capsule" size="0.02 0.06" mass="0.3"/></body></worldbody></mujoco>'
+    )
+    data = mujoco.MjData(model)
+    rng = np.random.default_rng(4)
+    for _ in range(4):
+        mujoco.mj_resetData(model, data)
+        data.qpos[3:] = Rotation.random(random_state=rng).as_quat(scalar_first=True)
+        data.qvel[:] = rng.uniform(-8, 8, 6)
+        data.qvel[2] = -1.5
+        with E.MujocoHook(model, data, "pill", mu=0.5, kappa=0.6) as hook:
+            out = hook.step()
+            while not out.impacted:
+                out = hook.step()
+        hit = out.impacts[0]
+        turn = rotation(hit.orientation)
+        axis = turn[:, 2]
+        ends = [hit.position + s * 0.06 * axis for s in (-1, 1)]
+        lower = min(ends, key=lambda e: e[2])
+        np.testing.assert_allclose(hit.point, lower - [0, 0, 0.02], rtol=0, atol=1e-12)
+        inertia = turn @ np.diag(model.body_inertia[1]) @ turn.T
+        body = RigidBody(0.3, inertia, hit.point - hit.position)
+        exact = solve_rigid(body, hit.velocity_before, hit.spin_before, mu=0.5, kappa=0.6,
+                            surface=FLOOR)  # fmt: skip
+        speed = np.linalg.norm(hit.velocity_before) + 0.08 * np.linalg.norm(hit.spin_before)
+        assert np.max(np.abs(exact.velocity - hit.velocity_after)) <= 1e-12 * speed
+        assert 0.08 * np.max(np.abs(exact.spin - hit.spin_after)) <= 1e-12 * speed

@@ -210,14 +210,17 @@ class MujocoHook(Hook):
         pass
 
     def _advance(self, v, g, span) -> str | None:
-        m, d, dv, b = self._model, self._data, self._qvel, self._body
-        self._mj.mj_step(m, d)
-        dofs = slice(dv, dv + 6)
-        for name in ("qfrc_constraint", "qfrc_applied", "qfrc_actuator", "qfrc_passive"):
-            if np.count_nonzero(getattr(d, name)[dofs]):
-                return f"the body felt {name} (a contact, an applied force, damping, an actuator)"
-        if np.count_nonzero(d.xfrc_applied[b]):
-            return "the body felt xfrc_applied"
+        """The engine's step; the body flew free if no constraint acted on its dofs and its
+        smooth force was gravity's and the velocity products' alone: ``qfrc_smooth`` is
+        ``qfrc_passive - qfrc_bias + qfrc_applied + qfrc_actuator`` plus ``xfrc_applied``
+        mapped to the dofs, so ``qfrc_smooth + qfrc_bias`` is exactly 0 then."""
+        d, dofs = self._data, slice(self._qvel, self._qvel + 6)
+        self._mj.mj_step(self._model, d)
+        if np.count_nonzero(d.qfrc_constraint[dofs]):
+            return "the body felt a constraint force (a contact with another body, a limit)"
+        if np.count_nonzero(d.qfrc_smooth[dofs] + d.qfrc_bias[dofs]):
+            return ("the body felt a force other than gravity (xfrc_applied, qfrc_applied, an "
+                    "actuator, damping, a fluid)")  # fmt: skip
         return None
 
     def _release(self) -> None:
