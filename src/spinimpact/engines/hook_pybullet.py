@@ -87,6 +87,7 @@ class PybulletHook(Hook):
         geometry = self._geometry_of(pb, kw, b, p)
         self._setup(geometry, rules)
         self._steps = 0
+        self._isotropic = bool(np.ptp(geometry.moments) == 0)
         pb.setCollisionFilterPair(b, p, -1, -1, 0, **kw)
 
     @staticmethod
@@ -169,17 +170,20 @@ class PybulletHook(Hook):
             self._pb.removeState(saved, **self._kw)
 
     def _advance(self, v0, g, span) -> str | None:
-        pb, kw = self._pb, self._kw
-        w0 = np.array(pb.getBaseVelocity(self._body, **kw)[1], float)
+        """The engine's step; the body flew free if its velocity changed by gravity's alone
+        (to 1e-12 of the speeds) and, for isotropic inertia, its spin did not change."""
+        pb, kw, b = self._pb, self._kw, self._body
+        w0 = pb.getBaseVelocity(b, **kw)[1]
         pb.stepSimulation(**kw)
         self._steps += 1
-        v, w = (np.array(a, float) for a in pb.getBaseVelocity(self._body, **kw))
-        scale = float(np.max(np.abs(v0))) + float(np.max(np.abs(g))) * span
-        if np.max(np.abs(v - (v0 + g * span))) > 1e-12 * scale:
+        v, w = pb.getBaseVelocity(b, **kw)
+        v0, g = v0.tolist(), g.tolist()
+        tol = 1e-12 * (max(map(abs, v0)) + max(map(abs, g)) * span)
+        if max(abs(a - (b0 + c * span)) for a, b0, c in zip(v, v0, g, strict=True)) > tol:
             return ("the body's velocity changed by more than gravity gives (a contact? "
                     "damping: set linearDamping to 0)")  # fmt: skip
-        spin = float(np.max(np.abs(w0)))
-        if np.ptp(self._geometry.moments) == 0 and np.max(np.abs(w - w0)) > 1e-12 * spin:
+        tol = 1e-12 * max(map(abs, w0))
+        if self._isotropic and max(abs(a - b0) for a, b0 in zip(w, w0, strict=True)) > tol:
             return "the body's spin changed (a contact? damping: set angularDamping to 0)"
         return None
 
