@@ -268,6 +268,7 @@ def test_a_tangential_law_is_applied_to_a_ball():
             "law must be one of poisson, newton, energetic; got 'hertz'",
         ),
         ({"law": 3}, TypeError, "law must be one of"),
+        ({"tangential": "walton"}, TypeError, "tangential must be a tangential compliance law"),
         ({"rest_speed": -1.0}, ValueError, "rest_speed must be None or a finite speed >= 0"),
         ({"rest_speed": "fast"}, TypeError, "rest_speed must be None or a finite speed"),
         ({"body": "nothing"}, ValueError, "body must name a body of the model, got 'nothing'"),

@@ -56,6 +56,7 @@ from typing import Any
 import numpy as np
 
 from .._validation import scalar, setting
+from ..model._hooks import tangential_law
 from ..model.body import Body
 from ..model.rigid import LAWS, RigidBody, solve_rigid
 from ..model.sphere3d import Surface, solve_sphere
@@ -202,6 +203,8 @@ class Law:
         if rest_speed is not None:
             rest_speed = setting("rest_speed", rest_speed, low=0.0, closed=True,
                                  rule="None or a finite speed >= 0 (m/s)")  # fmt: skip
+        if tangential is not None:
+            tangential = tangential_law(tangential)
         mu = scalar("mu", mu, why="a hook applies one law")
         kappa = scalar("kappa", kappa, why="a hook applies one law")
         return cls(mu, kappa, tangential, law, rest_speed)
