@@ -60,6 +60,7 @@ images: $(STAMP)  ## draw the docs' figures into build/images (git-ignored); IMA
 	$(VENV)/bin/spinimpact figures --output-dir $(IMAGES) --dpi 80
 	$(PY) docs/scripts/convergence.py $(IMAGES)/convergence.png
 	$(PY) docs/scripts/engines.py $(IMAGES)/engines.png
+	$(PY) docs/scripts/engine_restitution.py $(IMAGES)/engine_restitution.png > /dev/null
 	$(VENV)/bin/spinimpact planar --body rod --orientation-deg 45 --mu 0.3 --kappa 0.8 --plot $(IMAGES)/routh_planar.png --dpi 80 > /dev/null
 	$(VENV)/bin/spinimpact planar --body rod --mu 0.8 --kappa 0.9 --law newton --map-plot $(IMAGES)/planar_map.png --resolution 300 --dpi 80 > /dev/null
 	$(PY) docs/scripts/fit_kharaz.py $(IMAGES)/fit_kharaz.png

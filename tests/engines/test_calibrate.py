@@ -171,6 +171,8 @@ def test_command_writes_the_configuration_and_prints_json(tmp_path):
     bad = subprocess.run(command[:6] + ["0", "--samples", "4"], capture_output=True, text=True)
     assert bad.returncode == 2
     assert bad.stderr.count("\n") == 1 and "dt must be a finite number > 0" in bad.stderr
+    bad = subprocess.run(command[:7] + ["--samples", "0"], capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--samples" in bad.stderr
 
 
 def test_a_body_of_many_sizes_is_refused():

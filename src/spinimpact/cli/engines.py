@@ -30,11 +30,11 @@ def engines_command() -> None:
 @body_options
 @surface_options
 @click.option(
-    "--samples", type=int, default=48, show_default=True,
+    "--samples", type=click.IntRange(min=1), default=48, show_default=True,
     help=_help("samples", "Incidences drawn for the search, and as many held out."),
 )  # fmt: skip
 @click.option(
-    "--seed", type=int, default=0, show_default=True,
+    "--seed", type=click.IntRange(min=0), default=0, show_default=True,
     help=_help("seed", "Of the search's incidences; the held-out ones use seed + 1."),
 )  # fmt: skip
 @click.option(

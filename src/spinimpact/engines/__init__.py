@@ -51,7 +51,12 @@ engines and compares their output with :func:`spinimpact.solve`. Its modules:
 :mod:`~spinimpact.engines.pybullet` and :mod:`~spinimpact.engines.mujoco`; and the
 impact hooks, which make one body's impacts on a plane exact inside the engine's own
 time loop: :mod:`~spinimpact.engines.hook` (:class:`HookStep`, :class:`HookImpact`),
-:class:`MujocoHook` and :class:`PybulletHook` (``docs/engine_hook.md``).
+:class:`MujocoHook` and :class:`PybulletHook` (``docs/engine_hook.md``); and the engines'
+own contact settings, measured against the exact answer (``docs/engines.md``):
+:mod:`~spinimpact.engines.calibrate` (:func:`calibrate`: settings searched for the
+closest rebounds), :mod:`~spinimpact.engines.restitution` (:func:`restitution_settings`,
+:func:`restitution_curve`: the setting for a head-on restitution) and
+:mod:`~spinimpact.engines.configure` (settings as MJCF or PyBullet calls).
 
 References
 ----------

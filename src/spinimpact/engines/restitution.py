@@ -205,7 +205,7 @@ def restitution_settings(
     >>> ball = Body.solid_sphere(mass=0.06, radius=0.033)
     >>> s = restitution_settings("pybullet", 0.75, 2.0, 1 / 240, ball)
     >>> round(s["restitution"], 3)  # at PyBullet's default contact parameters
-    0.764
+    0.727
     """
     from scipy.optimize import brentq
 
@@ -228,8 +228,9 @@ def restitution_settings(
             return float("nan")
 
     values = np.array([ratio(g) for g in grid])
-    ok = np.isfinite(values) & (values <= 1.0)  # a mean above 1: unstable at this step
-    if not ok.any():
+    ok = np.isfinite(values)
+    stable = ok & (values <= 1.0)  # a mean above 1: unstable at this step
+    if not stable.any():
         raise ValueError(
             f"no {engine} setting bounced stably at speed {v!r} m/s and time step {dt!r} s"
         )
@@ -241,7 +242,7 @@ def restitution_settings(
         raise ValueError(
             f"e = {e!r} cannot be reached by {engine} at speed {v!r} m/s and time step {dt!r} s "
             f"by its {'solref damping ratio' if engine == 'mujoco' else 'restitution'} "
-            f"(it reaches {np.min(values[ok]):.3g} to {np.max(values[ok]):.3g})"
+            f"(it reaches {np.min(values[stable]):.3g} to {np.max(values[stable]):.3g})"
         )
     # MuJoCo: the crossing at the most damping, furthest from an unstable contact
     j = cross[-1] if engine == "mujoco" else cross[0]
