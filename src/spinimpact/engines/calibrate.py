@@ -113,6 +113,11 @@ class _Space:
     settings: Callable[[np.ndarray], dict[str, Any]]
 
 
+def _clean(value: float) -> float:
+    """``value`` to 15 significant digits: 0.3 * 1.1 is written 0.33, not 0.33000000000000004."""
+    return float(f"{value:.15g}")
+
+
 def _pybullet_space(mu: float, kappa: float, dt: float) -> _Space:
     d = configure.PYBULLET_SETTINGS
     scales = {
@@ -128,7 +133,7 @@ def _pybullet_space(mu: float, kappa: float, dt: float) -> _Space:
     start = np.array([1.0 if kappa else 0.0, 1.0 if mu else 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0])
 
     def settings(x: np.ndarray) -> dict[str, Any]:
-        out = {k: float(max(v, 0.0) * s) for (k, s), v in zip(scales.items(), x, strict=True)}
+        out = {k: _clean(max(v, 0.0) * s) for (k, s), v in zip(scales.items(), x, strict=True)}
         return {"timestep": dt, **out}
 
     return _Space(tuple(scales), start, np.full(start.size, 0.5), settings)
@@ -146,7 +151,7 @@ def _mujoco_space(mu: float, kappa: float, dt: float) -> _Space:
 
     def settings(x: np.ndarray) -> dict[str, Any]:
         d = 1.0 - min(math.exp(x[4]), 0.9)
-        slide = max(x[5], 0.0) * mu
+        slide = _clean(max(x[5], 0.0) * mu)
         return {
             "timestep": dt,
             "solref": (math.exp(x[0]) * dt, max(x[1], 1e-4)),
