@@ -110,8 +110,16 @@ def _functions(module):
 
 
 if HAVE_NUMBA:  # pragma: no branch
-    for _m in (scalar, scalar3d, scalar_planar, scalar_stronge, tangential, scalar_mdr):
+    for _m in (scalar, scalar3d, scalar_planar, scalar_stronge, tangential):
         for _f in _functions(_m):
             register_jitable(_f)
+    # The micro-slip law passes the table's arrays down three calls. Inlined in Numba's IR,
+    # those calls cost no reference counting of the arrays (about 50 ns a call otherwise);
+    # the small sums under share_of are left to LLVM (inlined in the IR as well, they take
+    # minutes to compile).
+    _INLINED = (scalar_mdr.mdr_rebound, scalar_mdr.sphere_mdr_rebound, scalar_mdr.mdr_contact,
+                scalar_mdr.mdr_usable, scalar_mdr.share_of)  # fmt: skip
+    for _f in _functions(scalar_mdr):
+        register_jitable(inline="always")(_f) if _f in _INLINED else register_jitable(_f)
     for _f in _SHARED:
         register_jitable(_f)  # registers the function object itself; returns it unchanged

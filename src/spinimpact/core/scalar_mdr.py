@@ -108,12 +108,13 @@ def _line(a, s, i, j, m, w0, w1, w2, w3):
             + w3 * a[s, i, j, m + 3])  # fmt: skip
 
 
-def _plane(a, s, i, j, m, u0, u1, u2, u3, w0, w1, w2, w3):
-    """``a[s, i, j:j + 4, m:m + 4]`` weighted by ``u`` and ``w``, summed."""
-    return (u0 * _line(a, s, i, j, m, w0, w1, w2, w3)
-            + u1 * _line(a, s, i, j + 1, m, w0, w1, w2, w3)
-            + u2 * _line(a, s, i, j + 2, m, w0, w1, w2, w3)
-            + u3 * _line(a, s, i, j + 3, m, w0, w1, w2, w3))  # fmt: skip
+def _plane(a, s, i, j, m, u, w):
+    """``a[s, i, j:j + 4, m:m + 4]`` weighted by the four weights ``u`` (along ``j``) and
+    ``w`` (along ``m``), summed."""
+    return (u[0] * _line(a, s, i, j, m, w[0], w[1], w[2], w[3])
+            + u[1] * _line(a, s, i, j + 1, m, w[0], w[1], w[2], w[3])
+            + u[2] * _line(a, s, i, j + 2, m, w[0], w[1], w[2], w[3])
+            + u[3] * _line(a, s, i, j + 3, m, w[0], w[1], w[2], w[3]))  # fmt: skip
 
 
 def share_of(x, q, kappa, axes, touch, threshold, share):
@@ -138,11 +139,11 @@ def share_of(x, q, kappa, axes, touch, threshold, share):
             part = min(max((ax - xa) / (star - xa), 0.0), 1.0)
             stretch, t = 1, math.acos(1.0 - 2.0 * part) / math.pi
         ft, t0, t1, t2, t3 = _place(t, axes[6], axes[7], int(axes[8]))
-        q4, t4 = (q0, q1, q2, q3), (t0, t1, t2, t3)
-        phi = (k0 * _plane(share, stretch, fk, fq, ft, *q4, *t4)
-               + k1 * _plane(share, stretch, fk + 1, fq, ft, *q4, *t4)
-               + k2 * _plane(share, stretch, fk + 2, fq, ft, *q4, *t4)
-               + k3 * _plane(share, stretch, fk + 3, fq, ft, *q4, *t4))  # fmt: skip
+        q0123, t0123 = (q0, q1, q2, q3), (t0, t1, t2, t3)
+        phi = (k0 * _plane(share, stretch, fk, fq, ft, q0123, t0123)
+               + k1 * _plane(share, stretch, fk + 1, fq, ft, q0123, t0123)
+               + k2 * _plane(share, stretch, fk + 2, fq, ft, q0123, t0123)
+               + k3 * _plane(share, stretch, fk + 3, fq, ft, q0123, t0123))  # fmt: skip
     return float(phi if x > 0.0 else (-phi if x < 0.0 else 0.0)), bool(ax < star)
 
 
