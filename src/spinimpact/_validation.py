@@ -321,6 +321,7 @@ EXTRAS: dict[str, tuple[str, str]] = {
     "distributed": ("distributed", "dask"),
     "pybullet": ("pybullet", "engines"),
     "mujoco": ("mujoco", "engines"),
+    "pydrake": ("drake", "engines"),
     "jax": ("jax", "jax"),
 }
 

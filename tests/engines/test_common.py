@@ -109,7 +109,9 @@ def test_engine_run_is_a_result():
 
 def test_available_names_engines_only():
     assert all(isinstance(E.available(name), bool) for name in E.ENGINES)
-    with pytest.raises(ValueError, match="engine must be one of pybullet, mujoco; got 'numpy'"):
+    with pytest.raises(
+        ValueError, match="engine must be one of pybullet, mujoco, drake; got 'numpy'"
+    ):
         E.available("numpy")  # importable, but not an engine
 
 

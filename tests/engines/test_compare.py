@@ -1,4 +1,4 @@
-"""spinimpact.engines.bounce: PyBullet and MuJoCo set up to bounce the impact solve() solves.
+"""spinimpact.engines.bounce: PyBullet, MuJoCo and Drake set up to bounce the impact solve() solves.
 
 What is tested is the set-up (axes, spin sign, inertia, friction and restitution
 as each engine defines them, the error measure), through cases where an engine
@@ -20,11 +20,13 @@ from .bodies import BODIES, SPHERE, needs
 
 
 def test_unknown_engine():
-    with pytest.raises(ValueError, match="engine must be one of pybullet, mujoco; got 'ode'"):
+    with pytest.raises(
+        ValueError, match="engine must be one of pybullet, mujoco, drake; got 'ode'"
+    ):
         E.bounce("ode", SPHERE, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5)
     with pytest.raises(ValueError, match="engine"):
         E.available("ode")
-    with pytest.raises(TypeError, match="engine must be one of pybullet, mujoco; got 3"):
+    with pytest.raises(TypeError, match="engine must be one of pybullet, mujoco, drake; got 3"):
         E.bounce(3, SPHERE, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5)
     with pytest.raises(TypeError, match="engine"):
         E.available(None)
@@ -34,7 +36,7 @@ def test_unknown_engine():
 def test_a_missing_engine_names_the_extra(name, monkeypatch):
     """Without the engine, bounce() raises ImportError naming the [engines] extra
     (spinimpact._validation.require), after checking the inputs."""
-    monkeypatch.setitem(sys.modules, name, None)  # import of it now fails
+    monkeypatch.setitem(sys.modules, E.common.MODULES[name], None)  # import of it now fails
     assert not E.available(name)
     extra = r"needs .* not installed: pip install 'spinimpact\[engines\]'"
     with pytest.raises(ImportError, match=extra) as err:
@@ -63,15 +65,15 @@ def test_wrong_types_are_type_errors(engine):
         E.bounce(engine, SPHERE, "1", -1.0, 0.0, mu=0.3, kappa=0.5)
     with pytest.raises(TypeError, match="phase must be a real number"):
         E.bounce(engine, SPHERE, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5, phase=None)
-    key = {"pybullet": "hz", "mujoco": "timestep"}[engine]
+    key = {"pybullet": "hz", "mujoco": "timestep", "drake": "time_step"}[engine]
     with pytest.raises(TypeError, match=f"{key} must be a finite"):
         E.bounce(engine, SPHERE, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5, **{key: "fast"})
 
 
 #: Settings per engine for the checks below: the engines' defaults of bounce().
-CHECK_SETTINGS = {"pybullet": {}, "mujoco": {}}
+CHECK_SETTINGS = {"pybullet": {}, "mujoco": {}, "drake": {}}
 #: MuJoCo clamps a friction coefficient to at least 1e-5.
-FRICTIONLESS_RTOL = {"pybullet": 1e-9, "mujoco": 1e-4}
+FRICTIONLESS_RTOL = {"pybullet": 1e-9, "mujoco": 1e-4, "drake": 1e-9}
 
 
 def test_frictionless_keeps_tangential_velocity_and_spin(engine):
@@ -97,7 +99,8 @@ def test_angular_momentum_about_the_contact_point_is_kept(engine, body):
     before = inertia * omega - m * r * vx
     after = inertia * run.omega - m * r * run.vx
     change = np.abs(after - before) / (m * r * run.scale)
-    assert change.max() < {"pybullet": 1e-9, "mujoco": 3e-3}[engine]
+    # Drake: its point contact acts half the penetration below the surface (measured 1.2e-3)
+    assert change.max() < {"pybullet": 1e-9, "mujoco": 3e-3, "drake": 2e-3}[engine]
     # and the impact did act: friction changed the spin by far more than that
     assert np.all(np.abs(run.omega - omega) * r / run.scale > 0.1)
 
@@ -160,15 +163,26 @@ def test_sliding_impacts_have_friction_impulse_mu_times_normal(label, engine, se
     every set-up: the friction coefficient reaches the engine as mu (not combined
     with the plane's into something else)."""
     needs(engine)
+    if engine == "drake" and settings.get("contact") == "default":
+        pytest.skip(
+            "Drake's default contact breaks the proportion (|dvx| was 13 mu dvy at mu 0.05): "
+            "its lagged approximation bounds friction by the previous step's normal force, "
+            "which includes a large default dissipation"
+        )
     mu = np.array([0.05, 0.1, 0.2])
     run = E.bounce(engine, SPHERE, 3.0, -1.0, 0.0, mu=mu, kappa=0.5, **settings)
     assert set(np.asarray(run.exact.regime).astype(str)) == {"slip"}
-    np.testing.assert_allclose(np.abs(run.vx - 3.0) / (run.vy + 1.0), mu, rtol=1e-6)
+    # Drake's lagged approximation, for the same reason: measured 8.0e-4
+    lagged = engine == "drake" and settings.get("approximation", "lagged") == "lagged"
+    rtol = 1e-3 if lagged else 1e-6
+    np.testing.assert_allclose(np.abs(run.vx - 3.0) / (run.vy + 1.0), mu, rtol=rtol)
 
 
 def test_numpy_number_settings_are_accepted(engine):
-    key = {"pybullet": "hz", "mujoco": "timestep"}[engine]
-    value = {"pybullet": np.int64(240), "mujoco": np.float32(2e-5)}[engine]
+    key = {"pybullet": "hz", "mujoco": "timestep", "drake": "time_step"}[engine]
+    value = {"pybullet": np.int64(240), "mujoco": np.float32(2e-5), "drake": np.float32(2e-5)}[
+        engine
+    ]
     run = E.bounce(engine, SPHERE, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5, **{key: value})
     assert run.settings[key] == float(value)
 

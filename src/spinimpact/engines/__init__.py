@@ -1,7 +1,7 @@
 """The same bounce in general-purpose physics engines, beside the exact answer.
 
 Robotics, game and DEM developers usually bounce balls in a general engine. This
-package sets up PyBullet [1]_ and MuJoCo [2]_ (the ``[engines]`` extra,
+package sets up PyBullet [1]_, MuJoCo [2]_ and Drake [3]_ (the ``[engines]`` extra,
 ``pip install 'spinimpact[engines]'``) to bounce exactly the impact that
 :func:`spinimpact.solve` solves, so the engine's error can be measured case by
 case:
@@ -48,7 +48,8 @@ engines and compares their output with :func:`spinimpact.solve`. Its modules:
 :mod:`~spinimpact.engines.compare` (:func:`bounce`),
 :mod:`~spinimpact.engines.common` (:class:`EngineRun`, :func:`standard_cases`,
 :data:`CONFIGURATIONS`, the scene and the axes), and one module per engine,
-:mod:`~spinimpact.engines.pybullet` and :mod:`~spinimpact.engines.mujoco`; and the
+:mod:`~spinimpact.engines.pybullet`, :mod:`~spinimpact.engines.mujoco` and
+:mod:`~spinimpact.engines.drake`; and the
 impact hooks, which make one body's impacts on a plane exact inside the engine's own
 time loop: :mod:`~spinimpact.engines.hook` (:class:`HookStep`, :class:`HookImpact`),
 :class:`MujocoHook` and :class:`PybulletHook` (``docs/engine_hook.md``); and the engines'
@@ -66,6 +67,8 @@ References
    model-based control", 2012 IEEE/RSJ International Conference on Intelligent
    Robots and Systems (IROS), Vilamoura, 2012, pp. 5026-5033,
    doi:10.1109/IROS.2012.6386109.
+.. [3] R. Tedrake and the Drake Development Team, "Drake: Model-based design and
+   verification for robotics", 2019, https://drake.mit.edu.
 """
 
 from __future__ import annotations
@@ -81,7 +84,7 @@ from .pybullet import PYBULLET_DEFAULTS
 from .restitution import RestitutionCurve, restitution_curve, restitution_settings
 
 #: Modules the docstring examples need (tests/test_docs.py skips them without).
-__doctest_requires__ = ENGINES
+__doctest_requires__ = ("pybullet", "mujoco")
 
 __all__ = [
     "CONFIGURATIONS",

@@ -57,7 +57,7 @@ from ..model.body import Body
 from ..model.impact import solve
 from ..model.result import Result
 from . import configure
-from .common import EngineRun, check_engine, shaped, whole_number
+from .common import CONFIGURABLE, EngineRun, check_engine, shaped, whole_number
 
 __all__ = ["Calibration", "calibrate", "calibration_cases"]
 
@@ -492,7 +492,7 @@ def calibrate(
     True
     """
     began = time.perf_counter()
-    check_engine(engine)
+    check_engine(engine, CONFIGURABLE)
     if not isinstance(body, Body):
         raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
     for name in ("mass", "radius", "gyration"):

@@ -32,7 +32,15 @@ __all__ = [
 ]
 
 #: The engines this package can drive, each from the ``[engines]`` extra.
-ENGINES = ("pybullet", "mujoco")
+ENGINES = ("pybullet", "mujoco", "drake")
+
+#: The engines whose own contact settings :func:`~spinimpact.engines.calibrate`,
+#: :func:`~spinimpact.engines.restitution_settings` and
+#: :mod:`~spinimpact.engines.configure` search and write out.
+CONFIGURABLE = ("pybullet", "mujoco")
+
+#: Each engine's Python package (its import name).
+MODULES = {"pybullet": "pybullet", "mujoco": "mujoco", "drake": "pydrake"}
 
 #: The engine set-ups compared in ``docs/performance.md`` and by ``make bench``:
 #: (label, engine, settings for :func:`~spinimpact.engines.bounce`), each engine's
@@ -52,6 +60,9 @@ CONFIGURATIONS = (
     ("MuJoCo, its default contact", "mujoco", {"contact": "default"}),
     ("MuJoCo, calibrated, pyramidal", "mujoco", {"friction_time": None}),
     ("MuJoCo, calibrated, elliptic + solreffriction", "mujoco", {}),
+    ("Drake, its default contact (lagged, 1 ms)", "drake", {"contact": "default"}),
+    ("Drake, calibrated Hunt-Crossley, lagged", "drake", {}),
+    ("Drake, calibrated Hunt-Crossley, similar", "drake", {"approximation": "similar"}),
 )
 
 #: Whole time steps of free flight before the step in which contact begins.
@@ -59,20 +70,20 @@ LEAD_STEPS = 2
 
 
 # -- the engines ---------------------------------------------------------------------
-def check_engine(engine: Any) -> str:
-    """``engine`` itself if it names one of :data:`ENGINES`.
+def check_engine(engine: Any, engines: tuple[str, ...] = ENGINES) -> str:
+    """``engine`` itself if it names one of ``engines`` (by default :data:`ENGINES`).
 
     Raises
     ------
     TypeError
         If ``engine`` is not a string.
     ValueError
-        If it names no engine of :data:`ENGINES`.
+        If it names none of ``engines``.
     """
-    text = f"engine must be one of {', '.join(ENGINES)}; got {engine!r}"
+    text = f"engine must be one of {', '.join(engines)}; got {engine!r}"
     if not isinstance(engine, str):
         raise TypeError(text)
-    if engine not in ENGINES:
+    if engine not in engines:
         raise ValueError(text)
     return engine
 
@@ -82,7 +93,7 @@ def available(engine: str) -> bool:
 
     Parameters
     ----------
-    engine : {"pybullet", "mujoco"}
+    engine : {"pybullet", "mujoco", "drake"}
         One of :data:`ENGINES`.
 
     Returns
@@ -96,7 +107,7 @@ def available(engine: str) -> bool:
     TypeError, ValueError
         If ``engine`` is not one of :data:`ENGINES`.
     """
-    return _validation.available(check_engine(engine))
+    return _validation.available(MODULES[check_engine(engine)])
 
 
 # -- settings that spinimpact._validation does not cover --------------------------------
@@ -213,7 +224,7 @@ class EngineRun(Result):
     Attributes
     ----------
     engine : str
-        ``"pybullet"`` or ``"mujoco"``.
+        ``"pybullet"``, ``"mujoco"`` or ``"drake"``.
     settings : Mapping
         The engine settings used (time step, solver options, ...); for the
         calibrated MuJoCo contact also its ``stiffness`` (1/s^2) and the flat

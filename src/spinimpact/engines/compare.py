@@ -1,7 +1,8 @@
 """bounce(): one batch of impacts in an engine, beside :func:`spinimpact.solve`.
 
 :func:`bounce` validates the impacts, hands them flat to the engine module's
-``run`` (:mod:`spinimpact.engines.pybullet`, :mod:`spinimpact.engines.mujoco`),
+``run`` (:mod:`spinimpact.engines.pybullet`, :mod:`spinimpact.engines.mujoco`,
+:mod:`spinimpact.engines.drake`),
 solves the same impacts exactly and packs both into an
 :class:`~spinimpact.engines.EngineRun`.
 """
@@ -15,13 +16,13 @@ import numpy as np
 from .._validation import as_real_array, broadcast, check, scalar, validated
 from ..model.body import Body
 from ..model.impact import solve
-from . import mujoco, pybullet
+from . import drake, mujoco, pybullet
 from .common import EngineRun, check_engine, shaped
 
 __all__ = ["bounce"]
 
 #: Each engine's ``run(body, vx, vy, omega, mu, kappa, phase, **settings)``.
-_RUNNERS = {"pybullet": pybullet.run, "mujoco": mujoco.run}
+_RUNNERS = {"pybullet": pybullet.run, "mujoco": mujoco.run, "drake": drake.run}
 
 
 def bounce(
@@ -40,7 +41,7 @@ def bounce(
 
     Parameters
     ----------
-    engine : {"pybullet", "mujoco"}
+    engine : {"pybullet", "mujoco", "drake"}
         The engine (from the ``[engines]`` extra).
     body : Body
         The body, with scalar mass (kg), radius (m) and gyration (m); the engine

@@ -29,6 +29,7 @@ import numpy as np
 from .._validation import require, setting
 from ..model.body import Body
 from .common import (
+    CONFIGURABLE,
     LEAD_STEPS,
     Stepped,
     check_engine,
@@ -105,13 +106,13 @@ _MUJOCO_CAP = 40
 
 def defaults(engine: str) -> dict[str, Any]:
     """A copy of the engine's own defaults: :data:`MUJOCO_SETTINGS` or :data:`PYBULLET_SETTINGS`."""
-    check_engine(engine)
+    check_engine(engine, CONFIGURABLE)
     return dict(MUJOCO_SETTINGS if engine == "mujoco" else PYBULLET_SETTINGS)
 
 
 def version(engine: str) -> str:
     """The installed engine's version: ``mujoco.__version__``, PyBullet's API version."""
-    if check_engine(engine) == "mujoco":
+    if check_engine(engine, CONFIGURABLE) == "mujoco":
         return str(require("mujoco", "the MuJoCo version").__version__)
     pb = require("pybullet", "the PyBullet version")
     return f"API {pb.getAPIVersion()}"

@@ -30,7 +30,7 @@ from .._validation import as_real_array, check, scalar
 from ..model.body import Body
 from ..model.result import Array, Result, freeze
 from . import configure
-from .common import check_engine, whole_number
+from .common import CONFIGURABLE, check_engine, whole_number
 
 __all__ = ["RestitutionCurve", "restitution_curve", "restitution_settings"]
 
@@ -131,7 +131,7 @@ def restitution_curve(
         If a MuJoCo ball has not left the surface after 40 of the contact's time
         constants.
     """
-    check_engine(engine)
+    check_engine(engine, CONFIGURABLE)
     _check_body(body)
     speeds = as_real_array("speed", speed)
     check("speed", speeds, lambda v: np.isfinite(v) & (v > 0), "> 0 (m/s)")
@@ -209,7 +209,7 @@ def restitution_settings(
     """
     from scipy.optimize import brentq
 
-    check_engine(engine)
+    check_engine(engine, CONFIGURABLE)
     _check_body(body)
     e = scalar("e", e, "kappa")  # the rule of a restitution coefficient: in [0, 1]
     v = scalar("speed", speed, "speed")
