@@ -207,11 +207,7 @@ class _Drake:
         self.DiagramBuilder = framework.DiagramBuilder
         self.Simulator = get("pydrake.systems.analysis").Simulator
         self.add_plant = plant.AddMultibodyPlantSceneGraph
-        self.approximation = {
-            "similar": plant.DiscreteContactApproximation.kSimilar,
-            "lagged": plant.DiscreteContactApproximation.kLagged,
-            "tamsi": plant.DiscreteContactApproximation.kTamsi,
-        }
+        self.approximations = plant.DiscreteContactApproximation
         self.point = plant.ContactModel.kPoint
         self.CoulombFriction = plant.CoulombFriction
         self.SpatialInertia, self.UnitInertia = tree.SpatialInertia, tree.UnitInertia
@@ -220,6 +216,19 @@ class _Drake:
         self.add_material = geometry.AddContactMaterial
         self.RigidTransform = get("pydrake.math").RigidTransform
         self.SpatialVelocity = get("pydrake.multibody.math").SpatialVelocity
+
+    def approximation(self, name: str):
+        """Drake's ``DiscreteContactApproximation`` of :func:`run`'s ``name``.
+
+        Raises
+        ------
+        ValueError
+            If the installed Drake no longer has it (TAMSI is deprecated).
+        """
+        member = {"lagged": "kLagged", "similar": "kSimilar", "tamsi": "kTamsi"}[name]
+        if not hasattr(self.approximations, member):
+            raise ValueError(f"approximation {name!r} is not in the installed Drake")
+        return getattr(self.approximations, member)
 
 
 class _Scene:
@@ -261,7 +270,7 @@ class _Scene:
         builder = dr.DiagramBuilder()
         plant, _ = dr.add_plant(builder, self.time_step)
         plant.set_contact_model(dr.point)
-        plant.set_discrete_contact_approximation(dr.approximation[self.approximation])
+        plant.set_discrete_contact_approximation(dr.approximation(self.approximation))
         plant.mutable_gravity_field().set_gravity_vector([0.0, 0.0, 0.0])
         apart = spacing(radius)
         gyration2 = self.inertia / self.mass
