@@ -1,4 +1,4 @@
-"""Figure for docs/performance.md: how far PyBullet and MuJoCo land from the exact bounce.
+"""Figure for docs/performance.md: how far PyBullet, MuJoCo and Drake land from the exact bounce.
 
 Usage: python docs/scripts/engines.py OUTPUT.png   (needs the [engines] extra)
 

@@ -170,7 +170,11 @@ def test_command_writes_the_configuration_and_prints_json(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == ["contact.py"]  # no temporary left
     bad = subprocess.run(command[:6] + ["0", "--samples", "4"], capture_output=True, text=True)
     assert bad.returncode == 2
-    assert bad.stderr.count("\n") == 1 and "dt must be a finite number > 0" in bad.stderr
+    assert bad.stderr.count("\n") == 1 and "TIMESTEP must be a finite number > 0" in bad.stderr
+    lost = [*command[:7], "--output", str(tmp_path / "no such folder" / "x.py")]
+    bad = subprocess.run(lost, capture_output=True, text=True)  # refused before the search
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1
+    assert "the directory of --output" in bad.stderr and "does not exist" in bad.stderr
     bad = subprocess.run(command[:7] + ["--samples", "0"], capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--samples" in bad.stderr
 

@@ -205,3 +205,13 @@ def test_scalar_inputs_give_scalars(engine):
     for value in (run.vx, run.vy, run.omega, run.phase, run.error):
         assert np.ndim(value) == 0
     assert isinstance(run.exact, spinimpact.Impact)
+
+
+def test_a_ball_is_taken_as_its_body():
+    needs("pybullet")
+    ball = spinimpact.BALLS["table-tennis"]
+    for call in (
+        lambda b: E.bounce("pybullet", b, 1.0, -1.0, 0.0, mu=0.3, kappa=0.5).vx,
+        lambda b: E.restitution_settings("pybullet", 0.5, 2.0, 1 / 240, b),
+    ):
+        assert np.array_equal(call(ball), call(ball.body))

@@ -153,3 +153,15 @@ def test_micro_slip_bounces_are_fitted_through_the_table():
     track, truth = shots[0]
     p = predict_bounce(track.select(track.time < truth["contact_time"] - 0.01), f)
     assert abs(p.contact_time - truth["contact_time"]) < 2e-3
+
+
+@pytest.mark.parametrize(
+    ("name", "value", "error"),
+    [("poisson_ratio", float("nan"), ValueError), ("poisson_ratio", 0.7, ValueError),
+     ("poisson_ratio", "abc", TypeError), ("kappa", 1.5, ValueError), ("mu", None, TypeError)],
+)  # fmt: skip
+def test_shared_values_given_as_numbers_are_checked(two_shots, name, value, error):
+    track, _ = two_shots[0]
+    values = {**TRUE, "poisson_ratio": 0.3, name: value}
+    with pytest.raises(error, match=rf"shared\['{name}'\]"):
+        predict_bounce(track, values, law="mindlin-deresiewicz")

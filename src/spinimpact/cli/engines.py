@@ -46,8 +46,18 @@ def calibrate_command(engine: str, timestep: float, **o) -> None:
     """Search ENGINE's contact settings at the time step TIMESTEP (s, never searched) for the
     rebounds (velocity and spin) closest to the exact ones, and measure them on held-out
     incidences."""
+    from pathlib import Path
+
     from ..engines.calibrate import calibrate
 
+    if o["output"]:  # checked before the search, which takes minutes
+        target = Path(o["output"])
+        if target.is_dir():
+            raise click.UsageError(f"--output {str(target)!r} is a directory")
+        if not target.absolute().parent.is_dir():
+            raise click.UsageError(f"the directory of --output {str(target)!r} does not exist")
+    if not (timestep > 0 and timestep < float("inf")):
+        raise click.UsageError(f"TIMESTEP must be a finite number > 0 (s), got {timestep!r}")
     body = make_body(o["body"], o["mass"], o["radius"], o["gyration"])
     cal = calibrate(
         engine, body, mu=o["mu"], kappa=o["kappa"], dt=timestep, n=o["samples"], seed=o["seed"]

@@ -20,8 +20,10 @@ the functions here return NaN there, and :func:`mdr_usable` says beforehand.
 The table's arrays are an argument (``table``, the tuple :func:`mdr_table` returns), so a
 compiled caller receives them once rather than as constants frozen into its code. The
 array path (:func:`spinimpact.core.mdr_table.impulse_share` with Numba,
-:mod:`spinimpact.core.mdr_table_kernel`) reads every row with :func:`share_of`, so the
-results equal the library's bit for bit (``tests/core/test_law_mdr.py``). Numba-compatible;
+:mod:`spinimpact.core.mdr_table_kernel`) reads every row with :func:`share_of`, so where
+Numba is installed (the ``[fast]`` extra) the results equal the library's bit for bit
+(``tests/core/test_law_mdr.py``); without it the library reads the table with NumPy, whose
+sums differ in the last bit. Numba-compatible;
 registered for compiled callers by :mod:`spinimpact.core.law`. Nothing is validated.
 """
 
@@ -230,7 +232,8 @@ def mdr_rebound(vx, vy, omega, mass, radius, zeta, mu, kappa, stiffness_ratio, t
     tuple of float
         ``(vx^+, vy^+, omega^+, f_1)`` (m/s, m/s, rad/s, N s): ``solve(body, vx, vy, omega,
         mu=mu, kappa=kappa, tangential=MindlinDeresiewicz(stiffness_ratio=r))``'s ``after``
-        and ``tangential_impulse``, bit for bit, where :func:`mdr_usable`; NaN elsewhere
+        and ``tangential_impulse``, bit for bit with Numba installed, where
+        :func:`mdr_usable`; NaN elsewhere
         (``vy^+`` too: nothing of the impact is read from the table there).
     """
     slip = slip_velocity(vx, omega, radius)
@@ -257,7 +260,8 @@ def sphere_mdr_rebound(velocity, spin, normal, surface_velocity, mass, radius, i
     -------
     tuple of float
         ``(vx+, vy+, vz+, wx+, wy+, wz+)``: ``solve_sphere(...,
-        tangential=MindlinDeresiewicz(stiffness_ratio=r))``'s ``after``, bit for bit, where
+        tangential=MindlinDeresiewicz(stiffness_ratio=r))``'s ``after``, bit for bit with
+        Numba installed, where
         :func:`mdr_usable`; six NaNs elsewhere.
     """
     cn, _, speed, e = sphere_contact(velocity, spin, normal, radius, surface_velocity)

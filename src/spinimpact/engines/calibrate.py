@@ -57,7 +57,7 @@ from ..model.body import Body
 from ..model.impact import solve
 from ..model.result import Result
 from . import configure
-from .common import CONFIGURABLE, EngineRun, check_engine, shaped, whole_number
+from .common import CONFIGURABLE, EngineRun, check_engine, one_body, shaped, whole_number
 
 __all__ = ["Calibration", "calibrate", "calibration_cases"]
 
@@ -493,10 +493,7 @@ def calibrate(
     """
     began = time.perf_counter()
     check_engine(engine, CONFIGURABLE)
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    for name in ("mass", "radius", "gyration"):
-        scalar(f"body.{name}", getattr(body, name), why="a calibration takes one body size")
+    body = one_body(body, "a calibration takes one body size")
     mu, kappa = scalar("mu", mu), scalar("kappa", kappa)
     dt = configure._number("dt", dt, zero=False)
     seed = whole_number("seed", seed, low=0)

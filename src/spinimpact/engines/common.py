@@ -20,6 +20,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from .. import _validation
+from ..model.body import Body, as_body
 from ..model.impact import Impact
 from ..model.result import Array, Result
 
@@ -111,6 +112,16 @@ def available(engine: str) -> bool:
 
 
 # -- settings that spinimpact._validation does not cover --------------------------------
+def one_body(body: Any, why: str) -> Body:
+    """``body`` (a :class:`~spinimpact.Body`, or a ball, as every solver takes it) as a Body
+    of one size: ``TypeError`` for anything else, ``ValueError`` for arrays of sizes
+    (``why`` says why one size)."""
+    body = as_body(body)
+    for name in ("mass", "radius", "gyration"):
+        _validation.scalar(f"body.{name}", getattr(body, name), why=why)
+    return body
+
+
 def whole_number(name: str, value: Any, low: int = 1) -> int:
     """A whole-number setting ``>= low`` (a Python or NumPy integer, not a bool).
 

@@ -13,11 +13,11 @@ from typing import Any
 
 import numpy as np
 
-from .._validation import as_real_array, broadcast, check, scalar, validated
+from .._validation import as_real_array, broadcast, check, validated
 from ..model.body import Body
 from ..model.impact import solve
 from . import drake, mujoco, pybullet
-from .common import EngineRun, check_engine, shaped
+from .common import EngineRun, check_engine, one_body, shaped
 
 __all__ = ["bounce"]
 
@@ -140,10 +140,7 @@ def bounce(
        doi:10.1109/IROS.2012.6386109.
     """
     check_engine(engine)
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    for name in ("mass", "radius", "gyration"):
-        scalar(f"body.{name}", getattr(body, name), why="an engine run takes one body size")
+    body = one_body(body, "an engine run takes one body size")
     arrays = {
         "vx": validated("vx", vx),
         "vy": validated("vy", vy),

@@ -30,7 +30,7 @@ from .._validation import as_real_array, check, scalar
 from ..model.body import Body
 from ..model.result import Array, Result, freeze
 from . import configure
-from .common import CONFIGURABLE, check_engine, whole_number
+from .common import CONFIGURABLE, check_engine, one_body, whole_number
 
 __all__ = ["RestitutionCurve", "restitution_curve", "restitution_settings"]
 
@@ -90,11 +90,7 @@ def _ratios(engine: str, body: Body, speed: np.ndarray, phases: int, settings) -
 
 
 def _check_body(body: Any) -> Body:
-    if not isinstance(body, Body):
-        raise TypeError(f"body must be a spinimpact.Body, got {type(body).__name__}")
-    for name in ("mass", "radius", "gyration"):
-        scalar(f"body.{name}", getattr(body, name), why="an engine run takes one body size")
-    return body
+    return one_body(body, "an engine run takes one body size")
 
 
 def restitution_curve(
@@ -132,7 +128,7 @@ def restitution_curve(
         constants.
     """
     check_engine(engine, CONFIGURABLE)
-    _check_body(body)
+    body = _check_body(body)
     speeds = as_real_array("speed", speed)
     check("speed", speeds, lambda v: np.isfinite(v) & (v > 0), "> 0 (m/s)")
     phases = whole_number("phases", phases)
@@ -210,7 +206,7 @@ def restitution_settings(
     from scipy.optimize import brentq
 
     check_engine(engine, CONFIGURABLE)
-    _check_body(body)
+    body = _check_body(body)
     e = scalar("e", e, "kappa")  # the rule of a restitution coefficient: in [0, 1]
     v = scalar("speed", speed, "speed")
     if v == 0:

@@ -32,8 +32,6 @@ import numpy as np
 from .._validation import check, scalar, whole
 from ..core import compliance as kernels
 from ..core import mdr, mdr_table
-from ..core.scalar_mdr import mdr_contact
-from ..core.scalar_mdr import mdr_table as mdr_scalar_table
 from ..core.scalar_tangential import stronge_contact, walton_contact
 from . import _fast_tangential
 from .body import Body
@@ -320,13 +318,19 @@ class MindlinDeresiewicz(TangentialLaw):
                       steps=self.steps)  # fmt: skip
 
     def _on_floats(self) -> tuple | None:
-        """The table's impact on floats (:func:`_table_contact`) where this law reads the
-        table (the default method and resolution); ``None`` otherwise."""
+        """The table's impact on floats, compiled
+        (:func:`~spinimpact.core.mdr_table_kernel.contact_one`), where this law reads the
+        table (the default method and resolution) and Numba is installed; ``None``
+        otherwise. Without Numba the array path reads the table with NumPy, whose sums
+        differ from the law on floats in the last bit, so one impact takes that path too."""
+        from ..core import mdr_table_kernel  # imported here: Numba is heavy, and optional
+
         table = mdr_table.load_table()
         if (type(self) is not MindlinDeresiewicz or self.method != "table"
-                or (self.springs, self.steps) != (table.springs, table.steps)):  # fmt: skip
+                or (self.springs, self.steps) != (table.springs, table.steps)
+                or not mdr_table_kernel.HAVE_NUMBA):  # fmt: skip
             return None
-        return _table_contact, self.stiffness_ratio
+        return mdr_table_kernel.contact_one, self.stiffness_ratio
 
     def __repr__(self) -> str:
         which = ("poisson_ratio", self.poisson_ratio)
@@ -340,18 +344,6 @@ class MindlinDeresiewicz(TangentialLaw):
         if self.method != "table":
             extra += f", method={self.method!r}"
         return f"MindlinDeresiewicz({which[0]}={which[1]!r}{extra})"
-
-
-def _table_contact(slip: float, vy: float, zeta: float, mu: float, kappa: float,
-                   ratio: float) -> tuple:  # fmt: skip
-    """:func:`spinimpact.core.scalar_mdr.mdr_contact` with the shipped table: compiled where
-    Numba is installed (a few microseconds), else on floats in Python; ``(nan, False)``
-    outside the table's range and bound."""
-    from ..core import mdr_table_kernel  # imported here: Numba is heavy, and optional
-
-    if mdr_table_kernel.HAVE_NUMBA:
-        return mdr_table_kernel.contact_one(slip, vy, zeta, mu, kappa, ratio)
-    return mdr_contact(slip, vy, zeta, mu, kappa, ratio, mdr_scalar_table())
 
 
 #: The laws whose one impact of plain numbers takes the scalar path

@@ -80,11 +80,11 @@ def _rebound(law: str, shared: dict[str, np.ndarray]) -> Any:
     nu = np.asarray(shared["poisson_ratio"], dtype=float)
 
     def micro_slip(slip: Any, vy: Any, zeta: Any, mu: Any, kappa: Any) -> tuple:
-        rows = np.broadcast_arrays(slip, vy, mu, kappa, nu)
-        out, stuck = np.empty(rows[0].shape), np.empty(rows[0].shape, dtype=bool)
-        for value in np.unique(nu):  # one stiffness ratio a call (a fit shares one)
-            i = rows[4] == value
-            out[i], stuck[i] = table_slip(rows[0][i], rows[1][i], zeta, rows[2][i], rows[3][i],
+        rows = np.broadcast_arrays(slip, vy, zeta, mu, kappa, nu)
+        out, stuck = np.full(rows[0].shape, np.nan), np.zeros(rows[0].shape, dtype=bool)
+        for value in np.unique(nu[np.isfinite(nu)]):  # one ratio a call (a fit shares one)
+            i = rows[5] == value
+            out[i], stuck[i] = table_slip(*(r[i] for r in rows[:5]),
                                           float(mindlin_stiffness_ratio(value)))  # fmt: skip
         return out, stuck
 

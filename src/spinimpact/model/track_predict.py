@@ -20,7 +20,16 @@ from .presets import Ball
 from .presets import ball as as_ball
 from .track import Air, Track, plain
 from .track_arc import ArcFit, fit_arc
-from .track_bounce import CONTACT, SHARED_STEP, STEP, AtContact, flights, shared_names
+from .track_bounce import (
+    BOUNDS,
+    CONTACT,
+    LAWS,
+    SHARED_STEP,
+    STEP,
+    AtContact,
+    flights,
+    shared_names,
+)
 from .track_fit import BounceFit
 
 __all__ = ["Prediction", "predict_bounce"]
@@ -134,10 +143,20 @@ def predict_bounce(track: Track, shared: BounceFit | dict[str, float], *,
         values, cov_names, cov_shared = dict(shared), [], np.zeros((0, 0))
     else:
         raise TypeError(f"shared must be a BounceFit or a dict of values, got {shared!r}")
+    if law_ not in LAWS:
+        raise ValueError(f"law must be one of {', '.join(LAWS)}, got {law_!r}")
     names = shared_names(law_)
     missing = [n for n in names if n not in values]
     if missing:
         raise ValueError(f"shared values missing: {', '.join(missing)}")
+    for n in (*names, "lift_slope"):
+        if n not in values:
+            continue
+        v, (lo, hi) = values[n], BOUNDS[n]
+        if isinstance(v, bool) or not isinstance(v, int | float | np.floating | np.integer):
+            raise TypeError(f"shared[{n!r}] must be a number, got {v!r}")
+        if not lo <= v <= hi:  # NaN too
+            raise ValueError(f"shared[{n!r}] must be in [{lo:g}, {hi:g}], got {v!r}")
     if "lift_slope" in values:  # the ball's lift slope, fitted or given: flown throughout
         names += ("lift_slope",)
         ball_ = ball_.replace(lift_slope=float(values["lift_slope"]))
