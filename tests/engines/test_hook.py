@@ -408,3 +408,42 @@ def test_every_mujoco_integrator(integrator):
         assert RADIUS * np.max(np.abs(spin - w_ref)) <= 1e-9 * speed
         lag = 0.0 if integrator == "RK4" else -0.5 * G * h * h * (steps - hit)
         np.testing.assert_allclose(position - x_ref, [0, 0, lag], rtol=0, atol=1e-12)
+
+
+def test_one_hook_a_model_and_a_dropped_hook_gives_the_contact_back():
+    needs("mujoco")
+    import gc
+
+    model, data = mujoco_ball()
+    bits = model.geom_contype.copy(), model.geom_conaffinity.copy()
+    hook = E.MujocoHook(model, data, "ball", mu=0.3, kappa=0.5)
+    with pytest.raises(ValueError, match="already has an open hook"):
+        E.MujocoHook(model, data, "ball", mu=0.3, kappa=0.5)
+    assert not np.array_equal(model.geom_contype, bits[0])  # the open hook's bits kept
+    del hook  # dropped without close(): the engine gets its contact back all the same
+    gc.collect()
+    np.testing.assert_array_equal(model.geom_contype, bits[0])
+    np.testing.assert_array_equal(model.geom_conaffinity, bits[1])
+    with E.MujocoHook(model, data, "ball", mu=0.3, kappa=0.5) as again:  # a new one opens
+        again.step()
+    np.testing.assert_array_equal(model.geom_contype, bits[0])
+
+
+def test_one_hook_a_pybullet_client():
+    needs("pybullet")
+    world = SCENES["pybullet"]()
+    try:
+        hook = world.launch([0, 0, 1.0], UPRIGHT, [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5)
+        with pytest.raises(ValueError, match="already has an open hook"):
+            world.launch([0, 0, 1.0], UPRIGHT, [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5)
+        pb, kw = world.pb, world.kw
+        shape = pb.getCollisionShapeData(world.body, -1, **kw)[0][3][0]  # the ball's radius
+        pb.resetBasePositionAndOrientation(world.body, [0, 0, 0.5 * shape], [0, 0, 0, 1], **kw)
+        pb.performCollisionDetection(**kw)  # sunk into the plane: no contact while hooked
+        assert not pb.getContactPoints(world.body, world.plane, **kw)
+        hook.close()
+        pb.performCollisionDetection(**kw)
+        assert pb.getContactPoints(world.body, world.plane, **kw)
+        world.launch([0, 0, 1.0], UPRIGHT, [0, 0, -1.0], [0, 0, 0], mu=0.3, kappa=0.5).close()
+    finally:
+        world.close()

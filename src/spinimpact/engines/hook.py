@@ -49,6 +49,8 @@ hook reaches at the contact.
 from __future__ import annotations
 
 import math
+import weakref
+from collections.abc import Callable
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -66,6 +68,18 @@ __all__ = ["MAX_IMPACTS", "HookImpact", "HookStep"]
 #: The most impacts the hook resolves within one time step; more means the body is
 #: coming to rest on the plane, which the hook refuses.
 MAX_IMPACTS = 16
+
+#: The worlds (a MuJoCo model, a PyBullet client) that have an open hook: a hook takes the
+#: engine's step, so a second one on the same world would step it twice.
+_OPEN: set = set()
+
+
+def _give_back(world: Any, release: Callable[[], None]) -> None:
+    """Give a world's contact back (a hook closed, or dropped without being closed)."""
+    _OPEN.discard(world)
+    release()
+
+
 #: Samples of the coming step at which a rotating body's points are tested for contact
 #: before the first crossing is refined.
 _SAMPLES = 8
@@ -403,7 +417,9 @@ class Hook:
     (time, time step, gravity), ``_save(impact)``, ``_restore(saved)`` (whether it could),
     ``_discard(saved)``, ``_advance(v, g, span)`` (the engine's step, returning the
     reason it was not free flight from velocity ``v``, or ``None``) and
-    ``_release`` (the engine's contact given back)."""
+    ``_vacant(world)`` before the engine is changed and ``_claim(world, release)`` once
+    set up (the world marked as hooked, and ``release`` called to give the engine's contact
+    back when the hook is closed or dropped)."""
 
     _geometry: Geometry
     _law: Law
@@ -479,11 +495,27 @@ class Hook:
         self._exact, self._engine = exact, engine
         return HookStep(tuple(impacts), start + span, engine - exact)
 
+    @staticmethod
+    def _vacant(world: Any) -> None:
+        """``ValueError`` if ``world`` has an open hook (checked before the engine is
+        touched)."""
+        if world in _OPEN:
+            raise ValueError("this model already has an open hook: one hook a model (each "
+                             "takes the engine's step); close the open one first")  # fmt: skip
+
+    def _claim(self, world: Any, release: Callable[[], None]) -> None:
+        """Mark ``world`` as hooked and arrange for ``release`` (which must not hold the
+        hook) to run once: at :meth:`close`, or when the hook is dropped without being
+        closed, so the engine's contact always comes back."""
+        self._vacant(world)
+        _OPEN.add(world)
+        self._finalizer = weakref.finalize(self, _give_back, world, release)
+
     def close(self) -> None:
         """Give the contact between the body and the plane back to the engine."""
         if self._open:
-            self._release()
             self._open = False
+            self._finalizer()
 
     def __enter__(self):
         return self

@@ -108,10 +108,11 @@ class MujocoHook(Hook):
                     "the model has an explicit contact <pair> between the body and the "
                     "plane, which the hook cannot switch off: remove it"
                 )
+        self._vacant(id(model))
         self._setup(geometry, rules)
         self._spec = mj.mjtState.mjSTATE_INTEGRATION
         self._buffer = np.empty(mj.mj_stateSize(model, self._spec))
-        self._bits = self._exclude(model, geoms, p)
+        self._claim(id(model), _restorer(model, self._exclude(model, geoms, p)))
 
     # -- reading the model ---------------------------------------------------------------
     @staticmethod
@@ -223,5 +224,11 @@ class MujocoHook(Hook):
                     "actuator, damping, a fluid)")  # fmt: skip
         return None
 
-    def _release(self) -> None:
-        self._model.geom_contype[:], self._model.geom_conaffinity[:] = self._bits
+
+def _restorer(model: Any, bits: tuple[np.ndarray, np.ndarray]) -> Any:
+    """A function that puts the geoms' contact bits back (it holds the model, not a hook)."""
+
+    def release() -> None:
+        model.geom_contype[:], model.geom_conaffinity[:] = bits
+
+    return release

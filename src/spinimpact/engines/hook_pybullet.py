@@ -88,7 +88,9 @@ class PybulletHook(Hook):
         self._setup(geometry, rules)
         self._steps = 0
         self._isotropic = bool(np.ptp(geometry.moments) == 0)
+        self._vacant(("pybullet", kw.get("physicsClientId", 0)))
         pb.setCollisionFilterPair(b, p, -1, -1, 0, **kw)
+        self._claim(("pybullet", kw.get("physicsClientId", 0)), _restorer(pb, kw, b, p))
 
     @staticmethod
     def _geometry_of(pb, kw, b, p) -> Geometry:
@@ -187,5 +189,15 @@ class PybulletHook(Hook):
             return "the body's spin changed (a contact? damping: set angularDamping to 0)"
         return None
 
-    def _release(self) -> None:
-        self._pb.setCollisionFilterPair(self._body, self._plane, -1, -1, 1, **self._kw)
+
+def _restorer(pb: Any, kw: dict, body: int, plane: int) -> Any:
+    """A function that gives the body's contact with the plane back to PyBullet (it holds
+    the client's id, not a hook); nothing to give back once the client is disconnected."""
+
+    def release() -> None:
+        try:
+            pb.setCollisionFilterPair(body, plane, -1, -1, 1, **kw)
+        except pb.error:
+            pass
+
+    return release
