@@ -63,7 +63,8 @@ def test_mujoco_dampratio_is_solved_with_the_time_constant_held():
     [
         (("mujoco", 1.5, 2.0, 0.002, BALL), {}, ValueError, "e must be"),
         (("mujoco", "0.5", 2.0, 0.002, BALL), {}, TypeError, "e must be"),
-        (("mujoco", 0.5, -2.0, 0.002, BALL), {}, ValueError, "speed must be >= 0"),
+        (("mujoco", 0.5, -2.0, 0.002, BALL), {}, ValueError, r"speed must be > 0 \(m/s\)"),
+        (("mujoco", 0.5, 2.0, 0.002, BALL), {"timestep": 0.001}, ValueError, "time step is dt"),
         (("mujoco", 0.5, 0.0, 0.002, BALL), {}, ValueError, "speed must be > 0"),
         (("mujoco", 0.5, 2.0, -1.0, BALL), {}, ValueError, "dt must be a finite number > 0"),
         (("mujoco", 0.5, 2.0, 0.002, "ball"), {}, TypeError, "body must be a spinimpact.Body"),
@@ -79,6 +80,10 @@ def test_bad_input_is_named(args, kwargs, error, message):
         restitution_settings(*args, **kwargs)
 
 
-def test_curve_refuses_bad_speeds():
+def test_curve_refuses_bad_speeds_and_settings():
     with pytest.raises(ValueError, match="speed must be > 0"):
         restitution_curve("pybullet", {}, BALL, [1.0, 0.0])
+    with pytest.raises(ValueError, match="speed must hold at least one speed"):
+        restitution_curve("mujoco", {}, BALL, [])
+    with pytest.raises(TypeError, match="settings must be a mapping"):
+        restitution_curve("mujoco", None, BALL, 2.0)

@@ -130,8 +130,13 @@ def restitution_curve(
     check_engine(engine, CONFIGURABLE)
     body = _check_body(body)
     speeds = as_real_array("speed", speed)
+    if speeds.size == 0:
+        raise ValueError("speed must hold at least one speed, got none")
     check("speed", speeds, lambda v: np.isfinite(v) & (v > 0), "> 0 (m/s)")
     phases = whole_number("phases", phases)
+    if not isinstance(settings, Mapping):
+        raise TypeError(f"settings must be a mapping of setting names to values, got "
+                        f"{type(settings).__name__}")  # fmt: skip
     used = configure.checked(engine, settings)
     ratios = _ratios(engine, body, np.ravel(speeds), phases, used)
     shape = speeds.shape
@@ -208,9 +213,11 @@ def restitution_settings(
     check_engine(engine, CONFIGURABLE)
     body = _check_body(body)
     e = scalar("e", e, "kappa")  # the rule of a restitution coefficient: in [0, 1]
-    v = scalar("speed", speed, "speed")
-    if v == 0:
+    v = scalar("speed", speed, "vx")  # finite; its sign checked below, with its unit
+    if not v > 0:
         raise ValueError(f"speed must be > 0 (m/s), got {speed!r}")
+    if "timestep" in fixed:
+        raise ValueError("the time step is dt; give it there, not as timestep=")
     dt = configure._number("dt", dt, zero=False)
     phases = whole_number("phases", phases)
     base = configure.checked(engine, {**fixed, "timestep": dt})
