@@ -156,6 +156,14 @@ def tangential_rows(n: int = 1_000_000) -> list[tuple[str, float, float]]:
     }
     for fn, a in runs.values():
         fn(*a)  # compile, and touch the output
+    checks = {}  # each loop by hand computes what its law computes, before either is timed
+    for law_key, hand_key in (("walton", "hand"), ("micro-slip", "micro-slip by hand")):
+        for key in (law_key, hand_key):
+            runs[key][0](*runs[key][1])
+            checks[key] = out.copy()
+        scale = np.abs(checks[law_key]).max()
+        if not np.allclose(checks[hand_key], checks[law_key], rtol=0, atol=1e-12 * scale):
+            raise AssertionError(f"{hand_key}: the loop by hand is not the law's rebound")
     times = dict.fromkeys(runs, math.inf)
     for _ in range(7):  # interleaved, the best of each: the machine's noise hits all alike
         for key, (fn, a) in runs.items():

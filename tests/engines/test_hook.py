@@ -250,9 +250,15 @@ def test_a_tangential_law_is_applied_to_a_ball():
     while not out.impacted:
         out = hook.step()
     hit = out.impacts[0]
-    exact = solve_sphere(BALL, hit.velocity_before, hit.spin_before, mu=0.3, kappa=0.6,
-                         surface=FLOOR, tangential=law)  # fmt: skip
-    np.testing.assert_allclose(hit.velocity_after, exact.after.velocity, rtol=0, atol=1e-15)
+    # the reference from the launch alone: the parabola to the floor, then the law
+    x0, v0, w0 = np.array([0, 0, 0.3]), np.array([2.0, 0.0, -1.0]), np.array([0, 30.0, 0])
+    tc = (v0[2] + np.sqrt(v0[2] ** 2 + 2 * G * (x0[2] - RADIUS))) / G
+    exact = solve_sphere(BALL, v0 + DOWN * tc, w0, mu=0.3, kappa=0.6, surface=FLOOR,
+                         tangential=law)  # fmt: skip
+    assert abs(hit.time - tc) < 1e-12
+    np.testing.assert_allclose(hit.velocity_after, exact.after.velocity, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(hit.spin_after, exact.after.spin, rtol=0, atol=1e-10)
+    assert exact.regime != "slip"  # the law's stick branch, where Walton differs from rigid
     assert type(hit.exact).__name__ == "CompliantSphereImpact"
     _, model, data = mujoco_box([0.05, 0.05, 0.05])
     with pytest.raises(ValueError, match="tangential applies to a sphere"):

@@ -25,7 +25,7 @@ def test_settings_give_the_target_e_at_the_target_speed(engine, dt):
         assert settings["timestep"] == dt
         curve = restitution_curve(engine, settings, BALL, [2.0, 6.0])
         assert curve.restitution[0] == pytest.approx(e, abs=1e-6)
-        assert curve.low[0] <= e <= curve.high[0]
+        assert curve.low[0] < curve.high[0]  # the phase within a step matters at 2 m/s
     assert json.loads(json.dumps(curve.to_dict()))["speed"] == [2.0, 6.0]
 
 
