@@ -111,11 +111,8 @@ def _mujoco(held: dict, common: dict) -> None:
 def _scan(cases: dict) -> None:
     """MuJoCo's friction settings one at a time, from the calibration's start (mu 0.3,
     kappa 0.8): median errors of vx+, vy+ and R omega+ over the cases."""
-    import sys
+    from spinimpact.engines import calibration as module
 
-    from spinimpact.engines import calibrate as _  # noqa: F401 - loads the module
-
-    module = sys.modules["spinimpact.engines.calibrate"]
     mu, kappa = 0.3, 0.8
     bench = module._Bench("mujoco", BALL, cases, mu, kappa)
     space = module._mujoco_space(mu, kappa, MUJOCO_DT)

@@ -48,7 +48,7 @@ def calibrate_command(engine: str, timestep: float, **o) -> None:
     incidences."""
     from pathlib import Path
 
-    from ..engines.calibrate import calibrate
+    from ..engines.calibration import calibrate
 
     if o["output"]:  # checked before the search, which takes minutes
         target = Path(o["output"])

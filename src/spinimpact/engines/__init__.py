@@ -54,7 +54,7 @@ impact hooks, which make one body's impacts on a plane exact inside the engine's
 time loop: :mod:`~spinimpact.engines.hook` (:class:`HookStep`, :class:`HookImpact`),
 :class:`MujocoHook` and :class:`PybulletHook` (``docs/engine_hook.md``); and the engines'
 own contact settings, measured against the exact answer (``docs/engines.md``):
-:mod:`~spinimpact.engines.calibrate` (:func:`calibrate`: settings searched for the
+:mod:`~spinimpact.engines.calibration` (:func:`calibrate`: settings searched for the
 closest rebounds), :mod:`~spinimpact.engines.restitution` (:func:`restitution_settings`,
 :func:`restitution_curve`: the setting for a head-on restitution) and
 :mod:`~spinimpact.engines.configure` (settings as MJCF or PyBullet calls).
@@ -73,7 +73,7 @@ References
 
 from __future__ import annotations
 
-from .calibrate import Calibration, calibrate, calibration_cases
+from .calibration import Calibration, calibrate, calibration_cases
 from .common import CONFIGURATIONS, ENGINES, EngineRun, available, standard_cases
 from .compare import bounce
 from .configure import MUJOCO_SETTINGS, PYBULLET_SETTINGS
