@@ -335,7 +335,9 @@ def test_bad_pybullet_input_is_named():
             E.PybulletHook(1.5, world.plane, mu=0.3, kappa=0.5, client=world.client)
         with pytest.raises(ValueError, match="body must be a body of client"):
             E.PybulletHook(99, world.plane, mu=0.3, kappa=0.5, client=world.client)
-        with pytest.raises(ValueError, match="body must have a sphere or box shape, got shape"):
+        with pytest.raises(
+            ValueError, match="body must have a sphere or box shape, got GEOM_PLANE"
+        ):
             E.PybulletHook(world.plane, world.body, mu=0.3, kappa=0.5, client=world.client)
         shape = world.pb.createCollisionShape(world.pb.GEOM_SPHERE, radius=0.1, **world.kw)
         other = world.pb.createMultiBody(1.0, shape, basePosition=[5, 0, 1], **world.kw)

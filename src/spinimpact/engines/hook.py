@@ -375,7 +375,7 @@ def plan(geo: Geometry, law: Law, ball: Body | None, surface: Surface, span: flo
                 f"once (an edge or a face landing): the hook's law is for one contact point"
             )
         arm = rot @ geo.points[i] - geo.radii[i] * geo.normal
-        approach = -float((v + _cross(w, arm)) @ geo.normal)
+        approach = 0.0 - float((v + _cross(w, arm)) @ geo.normal)  # 0.0 - x: no -0.0
         if approach <= rest:
             raise ValueError(
                 f"the contact point approaches the plane at {approach:.3g} m/s, not faster "

@@ -111,7 +111,7 @@ class PybulletHook(Hook):
             radii = np.zeros(8)
         else:
             raise ValueError(
-                f"body must have a sphere or box shape, got shape type {kind} (body {b})"
+                f"body must have a sphere or box shape, got {_shape_name(pb, kind)} (body {b})"
             )
         if mass <= 0:
             raise ValueError(f"body must have a mass > 0, got {mass!r}")
@@ -201,3 +201,9 @@ def _restorer(pb: Any, kw: dict, body: int, plane: int) -> Any:
             pass
 
     return release
+
+
+def _shape_name(pb: Any, kind: int) -> str:
+    """PyBullet's name of a collision shape type (``GEOM_PLANE`` for 6)."""
+    names = [n for n in dir(pb) if n.startswith("GEOM_") and getattr(pb, n) == kind]
+    return names[0] if names else f"shape type {kind}"
